@@ -1,0 +1,3 @@
+"""exgen: endless, correct, gradeable problems for Mechanics of Machines."""
+
+__version__ = "0.1.0"

@@ -1,0 +1,333 @@
+"""Find, load and validate template files.
+
+Every problem in a file is collected before loading stops, each naming the file, the key and
+the line, so an author fixes a bank in one pass (mkdocs-style) rather than one error per run.
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib
+import os
+from dataclasses import dataclass
+from decimal import Decimal, InvalidOperation
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+
+import yaml
+
+from . import expr
+from .errors import BankError, TemplateError, UnknownTemplate
+from .template import ANSWER_TYPES, MistakeSpec, ParamSpec, PartSpec, Template, Tolerance
+
+BANKS_ENV = "EXGEN_BANKS"
+TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
+                 "solver", "statement", "parts", "figure"}
+PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value"}
+PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "choices"}
+TOL_KEYS = {"rel", "abs", "sig"}
+MAX_VALUES = 100_000
+
+
+@dataclass(frozen=True)
+class Bank:
+    """All templates by id, in a stable order."""
+
+    templates: dict[str, Template]
+
+    def get(self, template_id: str) -> Template:
+        try:
+            return self.templates[template_id]
+        except KeyError:
+            raise UnknownTemplate(template_id, sorted(self.templates)) from None
+
+    def __iter__(self):
+        return iter(self.templates.values())
+
+    def __len__(self) -> int:
+        return len(self.templates)
+
+
+def bank_dirs(extra: list[Path] | None = None) -> list[Path]:
+    """The packaged bank, then $EXGEN_BANKS, then any directories given explicitly."""
+    dirs = [Path(str(resources.files("exgen.banks")))]
+    dirs += [Path(p) for p in os.environ.get(BANKS_ENV, "").split(os.pathsep) if p]
+    return dirs + list(extra or [])
+
+
+def load_bank(extra: list[Path] | None = None) -> Bank:
+    return _load_bank(tuple(bank_dirs(extra)))
+
+
+@lru_cache(maxsize=8)
+def _load_bank(dirs: tuple[Path, ...]) -> Bank:
+    templates: dict[str, Template] = {}
+    errors: list[TemplateError] = []
+    for directory in dirs:
+        for path in sorted(directory.rglob("*.yaml")):
+            try:
+                template = load_template(path)
+            except BankError as exc:
+                errors.extend(exc.errors)
+                continue
+            if template.id in templates:
+                errors.append(TemplateError(path, "id", f"{template.id!r} is also defined in {templates[template.id].path}"))
+                continue
+            templates[template.id] = template
+    if errors:
+        raise BankError(errors)
+    return Bank(templates)
+
+
+def load_template(path: Path) -> Template:
+    """Read one template file, raising BankError with every problem found in it."""
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8")
+        data = yaml.safe_load(text)
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except (UnicodeDecodeError, yaml.YAMLError) as exc:
+        line = getattr(getattr(exc, "problem_mark", None), "line", None)
+        raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
+    reader = _Reader(path, root)
+    template = reader.template(data, hashlib.sha256(raw).hexdigest())
+    if reader.errors:
+        raise BankError(reader.errors)
+    return template
+
+
+class _Reader:
+    """Turns parsed YAML into a Template, collecting errors with their lines."""
+
+    def __init__(self, path: Path, root):
+        self.path, self.root, self.errors = path, root, []
+
+    def error(self, keypath: tuple, message: str) -> None:
+        key = ".".join(str(k) for k in keypath)
+        self.errors.append(TemplateError(self.path, key, message, self._line(keypath)))
+
+    def _line(self, keypath: tuple) -> int | None:
+        node, line = self.root, None
+        for key in keypath:
+            if isinstance(node, yaml.MappingNode):
+                match = next(((k, v) for k, v in node.value if k.value == str(key)), None)
+                if match is None:
+                    break
+                node = match[1]
+                line = match[0].start_mark.line + 1
+            elif isinstance(node, yaml.SequenceNode) and isinstance(key, int) and key < len(node.value):
+                node = node.value[key]
+                line = node.start_mark.line + 1
+            else:
+                break
+        return line
+
+    def unknown_keys(self, mapping: dict, allowed: set, keypath: tuple) -> None:
+        for key in mapping:
+            if key not in allowed:
+                self.error(keypath + (key,), f"unknown key; expected one of {', '.join(sorted(allowed))}")
+
+    def template(self, data, version: str) -> Template | None:
+        if not isinstance(data, dict):
+            self.error((), "a template file must be a mapping of keys (id, title, params, parts, ...)")
+            return None
+        self.unknown_keys(data, TEMPLATE_KEYS, ())
+        for key in ("id", "title", "solver", "statement", "parts"):
+            if not data.get(key):
+                self.error((key,), "is required")
+        params = self.params(data.get("params") or {})
+        names = {p.name for p in params}
+        require = self.require(data.get("require") or [], names)
+        solver = self.reference(data.get("solver"), "solvers", ("solver",))
+        figure = self.reference(data.get("figure"), "figures", ("figure",)) if data.get("figure") else None
+        statement = str(data.get("statement") or "")
+        self.check_text(statement, names, ("statement",))
+        parts = self.parts(data.get("parts") or [], names)
+        chapter = data.get("chapter", 0)
+        if not isinstance(chapter, int):
+            self.error(("chapter",), "must be a whole number")
+        return Template(
+            id=str(data.get("id", "")), title=str(data.get("title", "")), chapter=chapter if isinstance(chapter, int) else 0,
+            section=str(data.get("section", "")), params=params, require=require, solver=solver or "",
+            statement=statement, parts=parts, figure=figure, source=str(data.get("source", "")),
+            topic=str(data.get("topic", "")), path=self.path, version=version,
+        )
+
+    def params(self, data) -> tuple[ParamSpec, ...]:
+        if not isinstance(data, dict):
+            self.error(("params",), "must be a mapping of parameter names to specs")
+            return ()
+        out = []
+        for name, spec in data.items():
+            where = ("params", name)
+            if not str(name).isidentifier():
+                self.error(where, "a parameter name must be a plain identifier (letters, digits, _)")
+                continue
+            if not isinstance(spec, dict):
+                self.error(where, "must be a mapping such as {min: 1, max: 5, step: 0.5, unit: m}")
+                continue
+            self.unknown_keys(spec, PARAM_KEYS, where)
+            common = dict(name=name, unit=str(spec.get("unit", "")), label=str(spec.get("label", "")),
+                          symbol=str(spec.get("symbol", "")))
+            if "value" in spec:
+                out.append(ParamSpec(**common, choices=(self.number_or_text(spec["value"]),)))
+            elif "choices" in spec:
+                choices = spec["choices"]
+                if not isinstance(choices, list) or not choices:
+                    self.error(where + ("choices",), "must be a non-empty list")
+                    continue
+                out.append(ParamSpec(**common, choices=tuple(self.number_or_text(c) for c in choices)))
+            else:
+                bounds = [self.decimal(spec.get(k), where + (k,)) for k in ("min", "max", "step")]
+                if None in bounds:
+                    continue
+                low, high, step = bounds
+                if step <= 0 or high < low:
+                    self.error(where, "needs min <= max and step > 0")
+                    continue
+                count = (high - low) / step
+                if count != count.to_integral_value():
+                    self.error(where + ("step",), f"(max - min) = {high - low} is not a whole number of steps of {step}")
+                    continue
+                if count + 1 > MAX_VALUES:
+                    self.error(where, f"more than {MAX_VALUES} values; use a coarser step")
+                    continue
+                out.append(ParamSpec(**common, min=low, max=high, step=step))
+        return tuple(out)
+
+    @staticmethod
+    def number_or_text(value):
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            return str(value)
+        return Decimal(str(value))
+
+    def decimal(self, value, where) -> Decimal | None:
+        if value is None:
+            self.error(where, "is required (or give `choices:` or `value:`)")
+            return None
+        try:
+            if isinstance(value, bool):
+                raise InvalidOperation
+            return Decimal(str(value))
+        except InvalidOperation:
+            self.error(where, f"{value!r} is not a number")
+            return None
+
+    def require(self, data, names: set) -> tuple[str, ...]:
+        if not isinstance(data, list):
+            self.error(("require",), "must be a list of conditions such as \"d2 > d1\"")
+            return ()
+        for i, condition in enumerate(data):
+            try:
+                unknown = expr.names_in(expr.parse(str(condition))) - names
+            except expr.ExpressionError as exc:
+                self.error(("require", i), str(exc))
+                continue
+            if unknown:
+                self.error(("require", i), f"names no parameter: {', '.join(sorted(unknown))}")
+        return tuple(str(c) for c in data)
+
+    def reference(self, ref, package: str, where) -> str | None:
+        """'belts:flat_belt_power' -> checks exgen.<package>.belts has that function."""
+        if ref is None:
+            return None
+        module_name, _, attr = str(ref).partition(":")
+        if not attr or not module_name.isidentifier():
+            self.error(where, f"must be 'module:function' naming a function in exgen.{package}")
+            return None
+        try:
+            module = importlib.import_module(f"exgen.{package}.{module_name}")
+        except ImportError:
+            self.error(where, f"no module exgen.{package}.{module_name}")
+            return None
+        if not callable(getattr(module, attr, None)):
+            self.error(where, f"exgen.{package}.{module_name} has no function {attr!r}")
+            return None
+        return str(ref)
+
+    def check_text(self, text: str, names: set, where) -> None:
+        from .text import undeclared_names
+
+        try:
+            unknown = undeclared_names(text) - names
+        except ValueError as exc:
+            self.error(where, str(exc))
+            return
+        if unknown:
+            self.error(where, f"refers to unknown parameter(s): {', '.join(sorted(unknown))}")
+
+    def parts(self, data, names: set) -> tuple[PartSpec, ...]:
+        if not isinstance(data, list):
+            self.error(("parts",), "must be a list of parts")
+            return ()
+        out, seen = [], []
+        for i, spec in enumerate(data):
+            where = ("parts", i)
+            if not isinstance(spec, dict):
+                self.error(where, "must be a mapping with id, ask and answer")
+                continue
+            self.unknown_keys(spec, PART_KEYS, where)
+            part_id = str(spec.get("id", ""))
+            for key in ("id", "ask", "answer"):
+                if not spec.get(key):
+                    self.error(where + (key,), "is required")
+            if part_id in seen:
+                self.error(where + ("id",), f"part {part_id!r} appears twice")
+            kind = spec.get("type", "number")
+            if kind not in ANSWER_TYPES:
+                self.error(where + ("type",), f"{kind!r} is not one of {', '.join(ANSWER_TYPES)}")
+            uses = tuple(str(u) for u in spec.get("uses") or ())
+            for used in uses:
+                if used not in seen:
+                    self.error(where + ("uses",), f"{used!r} is not an earlier part")
+            choices = tuple(str(c) for c in spec.get("choices") or ())
+            if kind == "choice" and not choices:
+                self.error(where + ("choices",), "a choice answer needs its list of choices")
+            self.check_text(str(spec.get("ask", "")), names, where + ("ask",))
+            points = spec.get("points", 1)
+            if isinstance(points, bool) or not isinstance(points, (int, float)) or points <= 0:
+                self.error(where + ("points",), "must be a positive number")
+                points = 1
+            out.append(PartSpec(
+                id=part_id, ask=str(spec.get("ask", "")), answer=str(spec.get("answer", "")),
+                unit=str(spec.get("unit", "")), type=kind, tol=self.tolerance(spec.get("tol"), kind, where),
+                points=float(points), mistakes=self.mistakes(spec.get("mistakes"), where),
+                uses=uses, choices=choices,
+            ))
+            seen.append(part_id)
+        return tuple(out)
+
+    def tolerance(self, spec, kind: str, where) -> Tolerance:
+        from .template import DEFAULT_ANGLE_ABS_TOL_DEG, DEFAULT_REL_TOL
+
+        defaults = {"rel": 0.0, "abs": DEFAULT_ANGLE_ABS_TOL_DEG} if kind == "angle" else {"rel": DEFAULT_REL_TOL, "abs": 0.0}
+        if kind in ("integer", "choice"):
+            defaults = {"rel": 0.0, "abs": 0.0}
+        if spec is None:
+            return Tolerance(**defaults)
+        if not isinstance(spec, dict):
+            self.error(where + ("tol",), "must be a mapping such as {rel: 0.01}")
+            return Tolerance(**defaults)
+        self.unknown_keys(spec, TOL_KEYS, where + ("tol",))
+        values = {**defaults, **{k: v for k, v in spec.items() if k in TOL_KEYS}}
+        for key, value in values.items():
+            if value is not None and (isinstance(value, bool) or not isinstance(value, (int, float)) or value < 0):
+                self.error(where + ("tol", key), "must be a number >= 0")
+                return Tolerance(**defaults)
+        return Tolerance(rel=float(values["rel"]), abs=float(values["abs"]),
+                         sig=int(values["sig"]) if values.get("sig") else None)
+
+    def mistakes(self, data, where) -> tuple[MistakeSpec, ...]:
+        if data is None:
+            return ()
+        if not isinstance(data, list):
+            self.error(where + ("mistakes",), "must be a list of {when: name, say: text}")
+            return ()
+        out = []
+        for j, item in enumerate(data):
+            if not isinstance(item, dict) or not item.get("when"):
+                self.error(where + ("mistakes", j), "needs `when:` naming a mistake value the solver records")
+                continue
+            self.unknown_keys(item, {"when", "say"}, where + ("mistakes", j))
+            out.append(MistakeSpec(str(item["when"]), str(item.get("say", ""))))
+        return tuple(out)

@@ -1,0 +1,140 @@
+"""A solution as a sequence of named steps: the answers, the worked solution and ECF in one.
+
+A solver is a plain function `solve(p, d)`: `p` holds the given data in SI, `d` is a
+Derivation. Each `d.step(...)` records symbol, formula, value and unit and returns the value
+the rest of the solution uses. When the grader re-runs a solver with `overrides`, a step
+named there returns the student's value instead, so later steps follow from it (error
+carried forward). `d.mistake(...)` records the value a known wrong method would give.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from .errors import InvalidDraw
+
+PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)")
+
+
+@dataclass(frozen=True)
+class Step:
+    """One line of a worked solution. `formula` is LaTeX with @name placeholders."""
+
+    name: str
+    symbol: str
+    formula: str
+    value: Any
+    unit: str = ""
+    note: str = ""
+    overridden: bool = False
+
+
+class Params:
+    """The given data of one variant, in SI, read as attributes: `p.d1`."""
+
+    def __init__(self, values: dict[str, Any], symbols: dict[str, str]):
+        self._values = dict(values)
+        self._symbols = dict(symbols)
+
+    def __getattr__(self, name: str):
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(f"no parameter named {name!r}") from None
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._values
+
+    def as_dict(self) -> dict[str, Any]:
+        return dict(self._values)
+
+
+class Derivation:
+    """Collects steps and mistake values while a solver runs."""
+
+    def __init__(self, params: Params, overrides: dict[str, float] | None = None):
+        self.params = params
+        self.overrides = dict(overrides or {})
+        self.steps: list[Step] = []
+        self.mistakes: dict[str, dict[str, float]] = {}
+        self._by_name: dict[str, Step] = {}
+
+    def step(self, name: str, value, unit: str = "", *, symbol: str | None = None,
+             formula: str = "", note: str = ""):
+        """Record a step and return its value (or the override for it, when re-running for ECF)."""
+        overridden = name in self.overrides
+        if overridden:
+            value = self.overrides[name]
+        step = Step(name, symbol or default_symbol(name), formula, value, unit, note, overridden)
+        self.steps.append(step)
+        self._by_name[name] = step
+        return value
+
+    def mistake(self, step_name: str, mistake: str, value: float) -> None:
+        """Record what `step_name` comes out as by the known wrong method `mistake`."""
+        self.mistakes.setdefault(step_name, {})[mistake] = value
+
+    def require(self, condition: bool, reason: str) -> None:
+        """Reject the draw (it is retried) when the drawn data give an invalid problem."""
+        if not condition:
+            raise InvalidDraw(reason)
+
+    def __getitem__(self, name: str) -> Step:
+        return self._by_name[name]
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._by_name
+
+    # ---- worked-solution text ------------------------------------------------------------
+
+    def symbol_of(self, name: str) -> str:
+        if name in self._by_name:
+            return self._by_name[name].symbol
+        return self.params._symbols.get(name, default_symbol(name))
+
+    def value_of(self, name: str):
+        if name in self._by_name:
+            return self._by_name[name].value
+        return getattr(self.params, name)
+
+
+def expand(formula: str, symbol_of, value_of=None, fmt=None) -> str:
+    """Replace @name by its symbol, or (with value_of) by its value in parentheses if negative."""
+    def symbol(match):
+        return symbol_of(match.group(1))
+
+    def number(match):
+        text = fmt(value_of(match.group(1)))
+        return f"({text})" if text.startswith("-") else text
+
+    return PLACEHOLDER.sub(number if value_of else symbol, formula)
+
+
+GREEK = {
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda",
+    "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega",
+    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+}
+
+
+def default_symbol(name: str) -> str:
+    """A LaTeX symbol from a name: mu -> \\mu, d1 -> d_1, T_max -> T_{\\mathrm{max}}, omega_2 -> \\omega_2."""
+    if "_" in name:
+        base, sub = name.split("_", 1)
+    else:
+        match = re.fullmatch(r"(.*?[A-Za-z])(\d+)", name)
+        base, sub = match.groups() if match else (name, "")
+    head = f"\\{base}" if base in GREEK else base
+    if not sub:
+        return head
+    if sub in GREEK:
+        sub = f"\\{sub}"
+    elif len(sub) > 1 and not sub.isdigit():
+        sub = r"\mathrm{" + sub + "}"
+    return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"
+
+
+def is_finite(value) -> bool:
+    return isinstance(value, (int, float)) and math.isfinite(value)

@@ -1,0 +1,81 @@
+"""Every error exgen raises on purpose, under one base class.
+
+Each carries the data it is about (file, key, line, template) and builds a message
+that names it, so the CLI can print it and exit without a traceback.
+"""
+from __future__ import annotations
+
+
+class ExgenError(Exception):
+    """Base class: an expected failure with a message meant for the user."""
+
+
+class TemplateError(ExgenError, ValueError):
+    """A template file that cannot be used; names the file and the key."""
+
+    def __init__(self, path, key: str, message: str, line: int | None = None):
+        self.path, self.key, self.line, self.detail = str(path), key, line, message
+        where = f"{self.path}:{line}" if line else self.path
+        super().__init__(f"{where}: {key}: {message}" if key else f"{where}: {message}")
+
+
+class BankError(ExgenError, ValueError):
+    """Several template problems found in one pass over a bank."""
+
+    def __init__(self, errors: list[TemplateError]):
+        self.errors = errors
+        lines = "\n".join(f"  {e}" for e in errors)
+        super().__init__(f"{len(errors)} problem(s) in the template bank:\n{lines}")
+
+
+class UnknownTemplate(ExgenError, KeyError):
+    def __init__(self, template_id: str, known: list[str]):
+        self.template_id = template_id
+        close = [k for k in known if template_id.split(".")[-1] in k][:5]
+        hint = f" Did you mean: {', '.join(close)}?" if close else " Run `exgen list` to see them."
+        super().__init__(f"no template with id {template_id!r}.{hint}")
+
+    def __str__(self) -> str:  # KeyError would quote the message
+        return self.args[0]
+
+
+class InvalidDraw(ExgenError, ValueError):
+    """Raised by a solver when drawn values give a physically invalid problem; the draw is retried."""
+
+
+class DrawError(ExgenError, RuntimeError):
+    """A template whose constraints could not be satisfied within the allowed tries."""
+
+    def __init__(self, template_id: str, tries: int, last_reason: str):
+        self.template_id, self.tries, self.last_reason = template_id, tries, last_reason
+        super().__init__(
+            f"{template_id}: no valid problem in {tries} draws (last rejection: {last_reason}); "
+            "widen the parameter ranges or relax the constraints"
+        )
+
+
+class QuantityError(ExgenError, ValueError):
+    """Text that cannot be read as a quantity (a format problem, not a wrong answer)."""
+
+
+class DimensionError(ExgenError, ValueError):
+    """A quantity of the wrong kind, e.g. a length where a force was asked."""
+
+    def __init__(self, given_unit: str, given_dim: str, asked_unit: str, asked_dim: str):
+        self.given_unit, self.given_dim, self.asked_unit, self.asked_dim = given_unit, given_dim, asked_unit, asked_dim
+        super().__init__(
+            f"'{given_unit}' is a {given_dim}, but a {asked_dim} is asked (in {asked_unit})"
+        )
+
+
+class AssignmentError(ExgenError, ValueError):
+    """An assignment file or roster that cannot be used; names the file and the problem."""
+
+    def __init__(self, path, message: str, line: int | None = None):
+        self.path, self.line = str(path), line
+        where = f"{self.path}:{line}" if line else self.path
+        super().__init__(f"{where}: {message}")
+
+
+class SecretError(ExgenError, RuntimeError):
+    """No course secret available, or one that does not match what was issued."""

@@ -1,0 +1,3 @@
+"""placeholder"""
+def belt_drive(variant):
+    return ""

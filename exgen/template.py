@@ -1,0 +1,106 @@
+"""The typed form of a template file: what a problem draws, asks and accepts.
+
+Instances are built once by `exgen.bank` (which validates them) and never change.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from decimal import Decimal
+from pathlib import Path
+
+ANSWER_TYPES = ("number", "angle", "integer", "choice")
+
+#: Default grading rules (DESIGN.md): 1 % relative, no absolute floor, angles within 0.5 deg.
+DEFAULT_REL_TOL = 0.01
+DEFAULT_ANGLE_ABS_TOL_DEG = 0.5
+
+
+@dataclass(frozen=True)
+class ParamSpec:
+    """One given quantity: drawn from a stepped range or a list of choices, printed in `unit`."""
+
+    name: str
+    unit: str = ""
+    label: str = ""
+    symbol: str = ""
+    min: Decimal | None = None
+    max: Decimal | None = None
+    step: Decimal | None = None
+    choices: tuple = ()
+
+    @property
+    def is_range(self) -> bool:
+        return self.step is not None
+
+    @property
+    def count(self) -> int:
+        """How many distinct values the parameter can take."""
+        if self.is_range:
+            return int((self.max - self.min) / self.step) + 1
+        return len(self.choices)
+
+    def value_at(self, index: int):
+        """The index-th allowed value, exact (Decimal for ranges, the choice itself otherwise)."""
+        if self.is_range:
+            return self.min + self.step * index
+        return self.choices[index]
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    rel: float = DEFAULT_REL_TOL
+    abs: float = 0.0
+    sig: int | None = None
+
+    def as_dict(self) -> dict:
+        return {k: v for k, v in (("rel", self.rel), ("abs", self.abs), ("sig", self.sig)) if v}
+
+
+@dataclass(frozen=True)
+class MistakeSpec:
+    """A known wrong answer: `when` names a value the solver computes; `say` is the feedback."""
+
+    when: str
+    say: str = ""
+
+
+@dataclass(frozen=True)
+class PartSpec:
+    id: str
+    ask: str
+    answer: str
+    unit: str = ""
+    type: str = "number"
+    tol: Tolerance = field(default_factory=Tolerance)
+    points: float = 1.0
+    mistakes: tuple[MistakeSpec, ...] = ()
+    uses: tuple[str, ...] = ()
+    choices: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Template:
+    id: str
+    title: str
+    chapter: int
+    section: str
+    params: tuple[ParamSpec, ...]
+    require: tuple[str, ...]
+    solver: str
+    statement: str
+    parts: tuple[PartSpec, ...]
+    figure: str | None = None
+    source: str = ""
+    topic: str = ""
+    path: Path | None = None
+    version: str = ""  # sha256 of the file's bytes: what was issued can be checked later
+
+    def param(self, name: str) -> ParamSpec:
+        return next(p for p in self.params if p.name == name)
+
+    def part(self, part_id: str) -> PartSpec:
+        return next(p for p in self.parts if p.id == part_id)
+
+    @property
+    def points(self) -> float:
+        return sum(p.points for p in self.parts)

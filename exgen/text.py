@@ -1,0 +1,30 @@
+"""Statement text: Jinja2 with StrictUndefined, so a misspelt parameter is an error, not a blank."""
+from __future__ import annotations
+
+from functools import lru_cache
+
+import jinja2
+import jinja2.meta
+
+
+@lru_cache(maxsize=1)
+def environment() -> jinja2.Environment:
+    return jinja2.Environment(undefined=jinja2.StrictUndefined, autoescape=False,
+                              keep_trailing_newline=False, trim_blocks=True, lstrip_blocks=True)
+
+
+@lru_cache(maxsize=1024)
+def _compile(text: str) -> jinja2.Template:
+    return environment().from_string(text)
+
+
+def undeclared_names(text: str) -> set[str]:
+    """Names a text refers to; raises ValueError on a Jinja syntax error."""
+    try:
+        return set(jinja2.meta.find_undeclared_variables(environment().parse(text)))
+    except jinja2.TemplateSyntaxError as exc:
+        raise ValueError(f"template syntax error on line {exc.lineno}: {exc.message}") from exc
+
+
+def render_text(text: str, context: dict) -> str:
+    return _compile(text).render(context).strip()

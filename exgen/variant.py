@@ -1,0 +1,169 @@
+"""A Variant: one drawn problem, frozen. Every renderer and the grader read it; none change it."""
+from __future__ import annotations
+
+import importlib
+import math
+from dataclasses import dataclass, field
+from decimal import Decimal
+from functools import lru_cache
+from types import MappingProxyType
+from typing import Any, Mapping
+
+from . import units
+from .derivation import Derivation, Params, Step, default_symbol
+from .draw import draw_values, failed_requirement, generator, si_values
+from .errors import DrawError, ExgenError, InvalidDraw
+from .template import PartSpec, Template
+from .text import render_text
+
+MAX_TRIES = 1000
+
+
+@dataclass(frozen=True)
+class ParamValue:
+    """A given value as printed (exact) and in SI."""
+
+    name: str
+    exact: Decimal | str
+    unit: str
+    si: float | str
+    label: str = ""
+    symbol: str = ""
+
+    @property
+    def text(self) -> str:
+        return units.format_decimal(self.exact) if isinstance(self.exact, Decimal) else self.exact
+
+    def __str__(self) -> str:  # what {{ d1 }} prints in a statement
+        shown = units.pretty_unit(self.unit)
+        if not shown:
+            return self.text
+        return f"{self.text}{shown}" if shown in ("\u00b0", "%") else f"{self.text} {shown}"
+
+
+@dataclass(frozen=True)
+class Answer:
+    """The expected answer of a part, in the unit the sheet asks for."""
+
+    part: PartSpec
+    value: Any
+    si: Any
+    step: Step
+
+    @property
+    def text(self) -> str:
+        if isinstance(self.value, float):
+            return units.format_quantity(self.value, self.part.unit)
+        return f"{self.value} {units.pretty_unit(self.part.unit)}".strip()
+
+
+@dataclass(frozen=True)
+class Variant:
+    template: Template
+    seed: int | None
+    params: tuple[ParamValue, ...]
+    steps: tuple[Step, ...]
+    answers: Mapping[str, Answer]
+    mistakes: Mapping[str, Mapping[str, Any]]  # part id -> mistake name -> value in asked unit
+    statement: str
+    asks: Mapping[str, str]
+    tries: int = field(default=1, compare=False)
+
+    def param(self, name: str) -> ParamValue:
+        return next(p for p in self.params if p.name == name)
+
+    @property
+    def si(self) -> dict[str, Any]:
+        return {p.name: p.si for p in self.params}
+
+    def step(self, name: str) -> Step:
+        return next(s for s in self.steps if s.name == name)
+
+
+@lru_cache(maxsize=256)
+def resolve(reference: str, package: str):
+    """'belts:flat_belt_power' -> the function exgen.<package>.belts.flat_belt_power."""
+    module_name, _, attr = reference.partition(":")
+    return getattr(importlib.import_module(f"exgen.{package}.{module_name}"), attr)
+
+
+def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES) -> Variant:
+    """Draw until the constraints hold and the solver accepts the data (bounded tries)."""
+    rng = generator(seed)
+    reason = ""
+    for attempt in range(1, max_tries + 1):
+        values = draw_values(template, rng)
+        try:
+            return build_variant(template, values, seed=seed, tries=attempt)
+        except InvalidDraw as exc:
+            reason = str(exc)
+    raise DrawError(template.id, max_tries, reason)
+
+
+def build_variant(template: Template, values: dict, *, seed: int | None = None, tries: int = 1,
+                  check: bool = True) -> Variant:
+    """Solve for given printed values; raise InvalidDraw if they break a constraint."""
+    si = si_values(template, values)
+    if check:
+        broken = failed_requirement(template, si)
+        if broken:
+            raise InvalidDraw(f"requires {broken}")
+    derivation = run_solver(template, si)
+    params = tuple(
+        ParamValue(s.name, values[s.name], s.unit, si[s.name], s.label, s.symbol or default_symbol(s.name))
+        for s in template.params
+    )
+    answers, mistakes = {}, {}
+    for part in template.parts:
+        answers[part.id] = answer_for(part, derivation)
+        mistakes[part.id] = MappingProxyType(mistakes_for(part, derivation))
+    context = {p.name: p for p in params}
+    return Variant(
+        template=template, seed=seed, params=params, steps=tuple(derivation.steps),
+        answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
+        statement=render_text(template.statement, context),
+        asks=MappingProxyType({p.id: render_text(p.ask, context) for p in template.parts}),
+        tries=tries,
+    )
+
+
+def run_solver(template: Template, si: dict, overrides: dict | None = None) -> Derivation:
+    symbols = {s.name: s.symbol or default_symbol(s.name) for s in template.params}
+    derivation = Derivation(Params(si, symbols), overrides)
+    try:
+        resolve(template.solver, "solvers")(derivation.params, derivation)
+    except (ZeroDivisionError, OverflowError, ValueError) as exc:
+        if isinstance(exc, ExgenError):
+            raise
+        raise InvalidDraw(f"solver failed: {exc}") from exc
+    return derivation
+
+
+def answer_for(part: PartSpec, derivation: Derivation) -> Answer:
+    if part.answer not in derivation:
+        raise ExgenError(f"{part.answer!r} (answer of part {part.id}) is not a step the solver records")
+    step = derivation[part.answer]
+    value = step.value
+    if part.type in ("number", "angle"):
+        if not (isinstance(value, (int, float)) and math.isfinite(value)):
+            raise InvalidDraw(f"part {part.id}: answer {value!r} is not a finite number")
+        value = units.convert(float(value), step.unit, part.unit)
+    return Answer(part, value, step.value, step)
+
+
+def mistakes_for(part: PartSpec, derivation: Derivation) -> dict[str, Any]:
+    """Mistake values recorded on the answer's step, in the asked unit."""
+    found = derivation.mistakes.get(part.answer, {})
+    step_unit = derivation[part.answer].unit
+    out = {}
+    for name, value in found.items():
+        if isinstance(value, (int, float)) and math.isfinite(value) and part.type in ("number", "angle"):
+            out[name] = units.convert(float(value), step_unit, part.unit)
+        elif part.type not in ("number", "angle"):
+            out[name] = value
+    return out
+
+
+def rerun(variant: Variant, overrides: dict[str, float]) -> Derivation:
+    """The variant's derivation with some steps replaced (SI values), for error carried forward."""
+    return run_solver(variant.template, variant.si, overrides)
