@@ -100,8 +100,14 @@ class Derivation:
         return getattr(self.params, name)
 
 
+
+
 def expand(formula: str, symbol_of, value_of=None, fmt=None) -> str:
-    """Replace @name by its symbol, or (with value_of) by its value in parentheses if negative."""
+    """Replace @name by its symbol, or (with value_of and fmt) by its formatted value.
+
+    In the substituted form a thin space next to a placeholder, which juxtaposes symbols
+    (``@mu\\,@theta``), becomes an explicit ``\\times`` between the numbers.
+    """
     def symbol(match):
         return symbol_of(match.group(1))
 
@@ -109,7 +115,11 @@ def expand(formula: str, symbol_of, value_of=None, fmt=None) -> str:
         text = fmt(value_of(match.group(1)))
         return f"({text})" if text.startswith("-") else text
 
-    return PLACEHOLDER.sub(number if value_of else symbol, formula)
+    if value_of is None:
+        return PLACEHOLDER.sub(symbol, formula)
+    times = re.sub(r"\s*\\,\s*(?=@)", r" \\times ", formula)
+    times = re.sub(r"(@[A-Za-z_]\w*)\s*\\,\s*", r"\1 \\times ", times)
+    return PLACEHOLDER.sub(number, times)
 
 
 GREEK = {
