@@ -54,8 +54,10 @@ class Params:
 class Derivation:
     """Collects steps and mistake values while a solver runs."""
 
-    def __init__(self, params: Params, overrides: dict[str, float] | None = None):
+    def __init__(self, params: Params, overrides: dict[str, float] | None = None, strict: bool = True):
         self.params = params
+        self.strict = strict
+        self.warnings: list[str] = []
         self.overrides = dict(overrides or {})
         self.steps: list[Step] = []
         self.mistakes: dict[str, dict[str, float]] = {}
@@ -77,9 +79,14 @@ class Derivation:
         self.mistakes.setdefault(step_name, {})[mistake] = value
 
     def require(self, condition: bool, reason: str) -> None:
-        """Reject the draw (it is retried) when the drawn data give an invalid problem."""
+        """Reject the draw (it is retried) when the drawn data give an invalid problem.
+
+        When solving for values a user gave (strict=False) the reason becomes a warning instead.
+        """
         if not condition:
-            raise InvalidDraw(reason)
+            if self.strict:
+                raise InvalidDraw(reason)
+            self.warnings.append(reason)
 
     def __getitem__(self, name: str) -> Step:
         return self._by_name[name]

@@ -68,6 +68,7 @@ class Variant:
     statement: str
     asks: Mapping[str, str]
     tries: int = field(default=1, compare=False)
+    warnings: tuple[str, ...] = ()
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -108,7 +109,7 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         broken = failed_requirement(template, si)
         if broken:
             raise InvalidDraw(f"requires {broken}")
-    derivation = run_solver(template, si)
+    derivation = run_solver(template, si, strict=check)
     params = tuple(
         ParamValue(s.name, values[s.name], s.unit, si[s.name], s.label, s.symbol or default_symbol(s.name))
         for s in template.params
@@ -123,13 +124,13 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
         statement=render_text(template.statement, context),
         asks=MappingProxyType({p.id: render_text(p.ask, context) for p in template.parts}),
-        tries=tries,
+        tries=tries, warnings=tuple(derivation.warnings),
     )
 
 
-def run_solver(template: Template, si: dict, overrides: dict | None = None) -> Derivation:
+def run_solver(template: Template, si: dict, overrides: dict | None = None, strict: bool = True) -> Derivation:
     symbols = {s.name: s.symbol or default_symbol(s.name) for s in template.params}
-    derivation = Derivation(Params(si, symbols), overrides)
+    derivation = Derivation(Params(si, symbols), overrides, strict)
     try:
         resolve(template.solver, "solvers")(derivation.params, derivation)
     except (ZeroDivisionError, OverflowError, ValueError) as exc:
@@ -166,4 +167,4 @@ def mistakes_for(part: PartSpec, derivation: Derivation) -> dict[str, Any]:
 
 def rerun(variant: Variant, overrides: dict[str, float]) -> Derivation:
     """The variant's derivation with some steps replaced (SI values), for error carried forward."""
-    return run_solver(variant.template, variant.si, overrides)
+    return run_solver(variant.template, variant.si, overrides, strict=False)

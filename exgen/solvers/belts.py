@@ -98,3 +98,148 @@ def belt_power(p, d):
         d.mistake(name, "radii_swapped", other)
         d.mistake(name, "diameter_for_radius", 2 * (t1 - t2) * radius)
         d.mistake(name, "centrifugal_ignored", (t1 - t2_light) * radius)
+
+
+def driven_diameter(p, d):
+    """Example 1.1: the driven pulley diameter for a wanted speed, with thickness and slip."""
+    n = d.step("n", p.N2 / p.N1, "", symbol=r"\frac{N_2}{N_1}", formula=r"\frac{@N2}{@N1}")
+    d.step("d2_plain", p.d1 / n, "m", symbol=r"d_2", formula=r"\frac{@d1}{@n}")
+    d.step("d2_thick", mb.driven_diameter(p.d1, n, p.t), "m", symbol=r"d_2",
+                   formula=r"\frac{@d1 + @t}{@n} - @t")
+    d.step("d2_slip", mb.driven_diameter(p.d1, n, 0.0, p.G), "m", symbol=r"d_2",
+                  formula=r"\frac{@d1\,(1 - @G)}{@n}")
+    both = d.step("d2_both", mb.driven_diameter(p.d1, n, p.t, p.G), "m", symbol=r"d_2",
+                  formula=r"\frac{(@d1 + @t)(1 - @G)}{@n} - @t")
+    d.require(both > 0, "driven pulley would have no size")
+    for name, thickness, slip_fraction in (("d2_plain", 0, 0), ("d2_thick", p.t, 0),
+                                           ("d2_slip", 0, p.G), ("d2_both", p.t, p.G)):
+        d.mistake(name, "ratio_inverted", (p.d1 + thickness) * n * (1 - slip_fraction) - thickness)
+        if thickness:
+            d.mistake(name, "thickness_forgotten", p.d1 * (1 - slip_fraction) / n)
+            d.mistake(name, "thickness_not_subtracted", (p.d1 + thickness) * (1 - slip_fraction) / n)
+        if slip_fraction:
+            d.mistake(name, "slip_not_applied", (p.d1 + thickness) / n - thickness)
+            d.mistake(name, "slip_wrong_way", (p.d1 + thickness) / (n * (1 - slip_fraction)) - thickness)
+
+
+def driven_speed(p, d):
+    """Example 1.2: the driven speed with slip on each pulley (G = G1 + G2) and belt thickness."""
+    g = d.step("G", p.G1 + p.G2, "", symbol="G", formula=r"@G1 + @G2", note="slip on each pulley adds")
+    ideal = d.step("N2_ideal", p.N1 * p.d1 / p.d2, "rad/s", symbol=r"\omega_2",
+                   formula=r"@N1\,\frac{@d1}{@d2}")
+    slipping = d.step("N2_slip", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, g), "rad/s", symbol=r"\omega_2",
+                      formula=r"@N1\,\frac{@d1}{@d2}\,(1 - @G)")
+    d.step("N2_thick", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, g), "rad/s", symbol=r"\omega_2",
+                   formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)")
+    d.mistake("N2_ideal", "ratio_inverted", p.N1 * p.d2 / p.d1)
+    d.mistake("N2_slip", "ratio_inverted", p.N1 * p.d2 / p.d1 * (1 - g))
+    d.mistake("N2_slip", "slip_not_applied", ideal)
+    d.mistake("N2_slip", "slip_one_pulley", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G1))
+    d.mistake("N2_slip", "slip_wrong_way", ideal * (1 + g))
+    d.mistake("N2_thick", "thickness_forgotten", slipping)
+    d.mistake("N2_thick", "slip_not_applied", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t))
+    d.mistake("N2_thick", "slip_one_pulley", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, p.G1))
+
+
+def compound_drive(p, d):
+    """Problem 1.4: motor -> main shaft -> countershaft, slip on each drive and belt thickness."""
+    main = d.step("N2", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, p.G), "rad/s", symbol=r"\omega_2",
+                  formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)", note="main shaft")
+    d.step("N4", main * mb.speed_ratio(p.d3, p.d4, p.t, p.G), "rad/s", symbol=r"\omega_4",
+                     formula=r"@N2\,\frac{@d3 + @t}{@d4 + @t}\,(1 - @G)",
+                     note="the pulley d3 turns with the main shaft")
+    d.mistake("N2", "slip_not_applied", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t))
+    d.mistake("N2", "thickness_forgotten", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G))
+    d.mistake("N2", "ratio_inverted", p.N1 * (p.d2 + p.t) / (p.d1 + p.t) * (1 - p.G))
+    d.mistake("N4", "slip_not_applied", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t) * mb.speed_ratio(p.d3, p.d4, p.t))
+    d.mistake("N4", "slip_once", main * mb.speed_ratio(p.d3, p.d4, p.t))
+    d.mistake("N4", "thickness_forgotten",
+              p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G) * mb.speed_ratio(p.d3, p.d4, 0.0, p.G))
+    d.mistake("N4", "ratio_inverted", main * (p.d4 + p.t) / (p.d3 + p.t) * (1 - p.G))
+
+
+def drive_geometry(p, d):
+    """Example 1.3: angle of contact and belt length, open and crossed."""
+    r1, r2 = _radii(p, d)
+    theta_open = _open_contact_angle(p, d, r1, r2)
+    alpha_x = d.step("alpha_crossed", mb.alpha_crossed(r1, r2, p.X), "rad", symbol=r"\alpha_{\times}",
+                     formula=r"\sin^{-1}\frac{@r1 + @r2}{@X}")
+    d.step("theta_crossed", math.pi + 2 * alpha_x, "rad", symbol=r"\theta_{\times}",
+           formula=r"\pi + 2\,@alpha_crossed", note="the same on both pulleys of a crossed drive")
+    d.mistake("theta_crossed", "open_formula", theta_open)
+    d.mistake("theta_crossed", "diameters_for_radii",
+              math.pi + 2 * math.asin(min(1.0, (p.d1 + p.d2) / p.X)))
+    d.step("L_open", mb.length_open(r1, r2, p.X), "m", symbol=r"L_{\mathrm{open}}",
+           formula=r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r2 - @r1)^2}{@X}")
+    d.step("L_crossed", mb.length_crossed(r1, r2, p.X), "m", symbol=r"L_{\times}",
+           formula=r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r1 + @r2)^2}{@X}")
+    d.mistake("L_open", "crossed_formula", mb.length_crossed(r1, r2, p.X))
+    d.mistake("L_crossed", "open_formula", mb.length_open(r1, r2, p.X))
+    for name, fn in (("L_open", mb.length_open), ("L_crossed", mb.length_crossed)):
+        d.mistake(name, "diameters_for_radii", fn(p.d1, p.d2, p.X))
+
+
+def max_power(p, d):
+    """§1.2.7: the belt speed that gives the greatest power (Tc = T_max / 3) and that power."""
+    r1, r2 = _radii(p, d)
+    theta = _open_contact_angle(p, d, r1, r2)
+    ratio = _tension_ratio(p, d, theta)
+    v = d.step("v_opt", mb.speed_for_max_power(p.T_max, p.m), "m/s", symbol=r"v_{\mathrm{opt}}",
+               formula=r"\sqrt{\frac{@T_max}{3\,@m}}", note="maximum power when T_c = T_max / 3")
+    d.mistake("v_opt", "tc_equals_tmax", math.sqrt(p.T_max / p.m))
+    d.mistake("v_opt", "tc_half", math.sqrt(p.T_max / (2 * p.m)))
+    tc = d.step("Tc", p.m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v_opt^2")
+    d.step("P_max", (p.T_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\max}",
+                   formula=r"(@T_max - @Tc)\left(1 - \frac{1}{@ratio}\right)@v_opt")
+    d.mistake("P_max", "centrifugal_ignored", p.T_max * (1 - 1 / ratio) * v)
+    d.mistake("P_max", "theta_in_degrees", (p.T_max - tc) * v)
+    d.step("N_opt", v / r1, "rad/s", symbol=r"\omega_1", formula=r"\frac{@v_opt}{@r1}",
+           note="driver speed that gives this belt speed")
+    d.mistake("N_opt", "diameter_for_radius", v / p.d1)
+
+
+def v_belt_count(p, d):
+    """Problem 1.3: how many V-belts carry a duty, and the effect of an idler on the wrap."""
+    d2 = d.step("d2", p.d2_max, "m", symbol=r"d_2", formula=r"@d2_max",
+                note="the largest allowed pulley keeps the belt speed up and the belt count down")
+    d1 = d.step("d1", d2 * p.N2 / p.N1, "m", symbol=r"d_1", formula=r"@d2\,\frac{@N2}{@N1}")
+    r1 = d.step("r1", d1 / 2, "m", formula=r"\frac{@d1}{2}")
+    r2 = d.step("r2", d2 / 2, "m", formula=r"\frac{@d2}{2}")
+    v = d.step("v", p.N1 * r1, "m/s", formula=r"@N1\,@r1")
+    d.require(v <= p.v_max, "belt speed above the limit")
+    alpha = d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad", formula=r"\sin^{-1}\frac{@r2 - @r1}{@X}")
+    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"\pi - 2\,@alpha",
+                   note="on the smaller (motor) pulley")
+    beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle")
+    t_max = d.step("T1", p.sigma * p.A, "N", symbol=r"T_1", formula=r"@sigma\,@A",
+                   note="the allowable stress sets the tight-side tension")
+    m = d.step("m", p.rho * p.A, "kg/m", formula=r"@rho\,@A")
+    tc = d.step("Tc", m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v^2")
+    d.require(tc < t_max / 3, "belt above its maximum-power speed")
+    ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol=r"\frac{T_1 - T_c}{T_2 - T_c}",
+                   formula=r"e^{@mu\,@theta / \sin @beta}")
+    per_belt = d.step("P_belt", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\mathrm{belt}}",
+                      formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)@v")
+    count = d.step("n_belts", mb.belts_needed(p.P, per_belt), "", symbol="n",
+                   formula=r"\left\lceil \frac{@P}{@P_belt} \right\rceil", note="rounded up to whole belts")
+    d.require(2 <= count <= 12, "an unrealistic number of belts")
+    d.mistake("n_belts", "rounded_down", math.floor(p.P / per_belt))
+    d.mistake("n_belts", "centrifugal_ignored", mb.belts_needed(p.P, t_max * (1 - 1 / ratio) * v))
+    d.mistake("n_belts", "flat_formula_on_v_belt",
+              mb.belts_needed(p.P, (t_max - tc) * (1 - 1 / mb.tension_ratio(p.mu, theta)) * v))
+    theta_idler = d.step("theta_idler", theta * (1 + p.idler), "rad", symbol=r"\theta'",
+                         formula=r"@theta\,(1 + @idler)")
+    ratio_idler = d.step("ratio_idler", mb.tension_ratio(p.mu, theta_idler, beta), "",
+                         symbol=r"\left(\frac{T_1 - T_c}{T_2 - T_c}\right)'",
+                         formula=r"e^{@mu\,@theta_idler / \sin @beta}")
+    per_belt_idler = d.step("P_belt_idler", (t_max - tc) * (1 - 1 / ratio_idler) * v, "W",
+                            symbol=r"P_{\mathrm{belt}}'",
+                            formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio_idler}\right)@v")
+    change = d.step("change", per_belt_idler / per_belt - 1, "", symbol=r"\Delta P / P",
+                    formula=r"\frac{@P_belt_idler}{@P_belt} - 1")
+    d.step("trend", "increase" if change > 0 else "decrease", "", symbol=r"\text{power}",
+           note="more wrap, more friction: each belt carries more")
+    d.mistake("change", "ratio_inverted", per_belt / per_belt_idler - 1)
+    d.mistake("change", "flat_formula_on_v_belt",
+              (1 - 1 / mb.tension_ratio(p.mu, theta_idler)) / (1 - 1 / mb.tension_ratio(p.mu, theta)) - 1)
+    d.mistake("trend", "opposite", "decrease" if change > 0 else "increase")

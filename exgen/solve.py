@@ -1,0 +1,69 @@
+"""Solve a template for values the user gives (`exgen solve ID --set d1=600mm ...`).
+
+Instructors check textbook problems with it; the tests check the worked examples with it.
+Values may be given in any unit of the right kind; a bare number is read in the template's unit.
+"""
+from __future__ import annotations
+
+from decimal import Decimal
+
+from . import units
+from .draw import failed_requirement, si_values
+from .errors import ExgenError, QuantityError
+from .template import Template
+from .variant import Variant, build_variant
+
+
+def parse_settings(pairs: list[str]) -> dict[str, str]:
+    """['d1=600mm', 'mu = 0.3'] -> {'d1': '600mm', 'mu': '0.3'}."""
+    out = {}
+    for pair in pairs:
+        name, sep, value = pair.partition("=")
+        if not sep or not name.strip():
+            raise ExgenError(f"--set {pair!r}: write NAME=VALUE, e.g. --set d1=600mm")
+        out[name.strip()] = value.strip()
+    return out
+
+
+def _exact(value: float) -> Decimal:
+    """A float from a unit conversion, cleaned of binary noise (320.00000000000006 -> 320)."""
+    return Decimal(f"{value:.12g}")
+
+
+def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal | str]:
+    """Each parameter's value in the template's own unit, from what the user typed."""
+    names = {p.name for p in template.params}
+    unknown = sorted(set(given) - names)
+    missing = [p for p in template.params if p.name not in given]
+    problems = []
+    if unknown:
+        problems.append(f"{template.id} has no parameter(s) {', '.join(unknown)}")
+    if missing:
+        listed = ", ".join(f"{p.name} ({p.label or 'value'}{', ' + p.unit if p.unit else ''})" for p in missing)
+        problems.append(f"give a value for {listed}")
+    if problems:
+        raise ExgenError("; ".join(problems))
+    values = {}
+    for spec in template.params:
+        text = given[spec.name]
+        if spec.choices and all(isinstance(c, str) for c in spec.choices):
+            if text not in spec.choices:
+                raise ExgenError(f"{spec.name} must be one of {', '.join(spec.choices)} (got {text!r})")
+            values[spec.name] = text
+            continue
+        try:
+            reading = units.parse_quantity(text)
+            value = reading.value if reading.unit is None else units.convert(reading.value, reading.unit, spec.unit)
+        except (QuantityError, ExgenError) as exc:
+            raise ExgenError(f"{spec.name}={text}: {exc}") from exc
+        values[spec.name] = _exact(value)
+    return values
+
+
+def solve(template: Template, given: dict[str, str]) -> tuple[Variant, list[str]]:
+    """The variant for the given values, and warnings for drawing constraints they break."""
+    values = given_values(template, given)
+    broken = failed_requirement(template, si_values(template, values))
+    warnings = [f"these values break the template's drawing constraint {broken!r}"] if broken else []
+    variant = build_variant(template, values, check=False)
+    return variant, warnings + list(variant.warnings)
