@@ -79,3 +79,12 @@ class AssignmentError(ExgenError, ValueError):
 
 class SecretError(ExgenError, RuntimeError):
     """No course secret available, or one that does not match what was issued."""
+
+
+class SubmissionError(ExgenError, ValueError):
+    """An answer file that cannot be read at all; names the file and, when known, the line."""
+
+    def __init__(self, path, message: str, line: int | None = None):
+        self.path, self.line, self.detail = str(path), line, message
+        where = f"{self.path}:{line}" if line else self.path
+        super().__init__(f"{where}: {message}")
