@@ -23,15 +23,15 @@ _ANGLE_UNITS = ("radian",)
 _TRANSLATE = str.maketrans({
     "\u2212": "-", "\u2013": "-", "\u2012": "-", "\u00a0": " ", "\u2009": " ", "\u202f": " ",
     "\u00b7": "*", "\u22c5": "*", "\u00d7": "x", "\u00b5": "u", "\u03bc": "u", "\u03a9": "ohm",
-    "\u00b2": "^2", "\u00b3": "^3", "\u207b": "^-", "\u00b9": "1", "\u2070": "0", "\u2074": "4",
-    "\u2075": "5", "\u2076": "6", "\u2077": "7", "\u2078": "8", "\u2079": "9",
 })
 _NUMBER = r"[+-]?(?:\d{1,3}(?: \d{3})+(?:\.\d*)?|\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?"
 _TIMES_TEN = r"(?:\s*(?:x|\*|\\times)\s*10\s*(?:\^|\*\*)\s*\(?\s*([+-]?\d{1,3})\s*\)?)?"
 _QUANTITY = re.compile(rf"\s*({_NUMBER}){_TIMES_TEN}\s*(.*?)\s*")
-_UNIT_CHARS = re.compile(r"[A-Za-z%*/^0-9.()\s\-]*")
+_UNIT_CHARS = re.compile(r"[A-Za-z%*/^0-9.()\s\-\u00b0]*")
+_BIG_POWER = re.compile(r"(\^|\*\*)\s*\(?\s*[+-]?\d{2,}")
 _LABEL = re.compile(r"^\s*[A-Za-z\u0370-\u03ff][A-Za-z0-9_\u0370-\u03ff ]{0,11}=\s*")
-_SUPERSCRIPT_POWER = re.compile(r"\^-\s*(\d)")
+_SUPERSCRIPTS = re.compile("[\u207a\u207b]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+")
+_PLAIN_DIGITS = str.maketrans("\u207a\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079", "+-0123456789")
 
 
 @lru_cache(maxsize=1)
@@ -49,9 +49,15 @@ def _aliases() -> dict[str, str]:
     return {a.strip(): b.strip() for a, b in pairs}
 
 
+def _plain(text: str) -> str:
+    """Unicode look-alikes to ASCII; superscripts to powers ("m²" -> "m^2", "10⁻³" -> "10^-3")."""
+    text = _SUPERSCRIPTS.sub(lambda m: "^" + m.group().translate(_PLAIN_DIGITS), text)
+    return text.translate(_TRANSLATE)
+
+
 def normalise_unit(text: str) -> str:
     """Unicode and habits ("Nm", "rev/min", "°") to a string pint reads."""
-    text = text.translate(_TRANSLATE).strip()
+    text = _plain(text).strip()
     text = text.replace("\u00b0C", "degC").replace("\u00b0", "degree")
     compact = text.replace(" ", "")
     return _aliases().get(compact, text)
@@ -87,26 +93,27 @@ def unit_info(text: str) -> UnitInfo:
     return UnitInfo(text, float(base.magnitude), str(unit.dimensionality), angle)
 
 
-_KINDS = {
-    ("[length]", 0): "length", ("[mass]", 0): "mass", ("[time]", 0): "time",
-    ("dimensionless", 0): "pure number", ("dimensionless", 1): "angle",
-    ("1 / [time]", 1): "angular speed", ("1 / [time]", 0): "frequency",
-    ("1 / [time] ** 2", 1): "angular acceleration", ("1 / [time] ** 2", 0): "rate of change of frequency",
-    ("[length] / [time]", 0): "speed", ("[length] / [time] ** 2", 0): "acceleration",
-    ("[length] * [mass] / [time] ** 2", 0): "force",
-    ("[length] ** 2 * [mass] / [time] ** 2", 0): "torque or energy",
-    ("[length] ** 2 * [mass] / [time] ** 3", 0): "power",
-    ("[mass] / [length] / [time] ** 2", 0): "pressure or stress",
-    ("[mass] / [length]", 0): "mass per unit length", ("[length] ** 2", 0): "area",
-    ("[length] ** 3", 0): "volume", ("[mass] / [length] ** 3", 0): "density",
-    ("[length] ** 2 * [mass]", 0): "moment of inertia", ("[length] * [mass]", 0): "mass times radius",
-    ("[mass] / [time] ** 2", 0): "stiffness", ("[mass] / [time]", 0): "damping coefficient",
+#: A word for each kind of quantity, keyed by an example unit (pint spells the dimensions).
+_KIND_EXAMPLES = {
+    "m": "length", "kg": "mass", "s": "time", "": "pure number", "rad": "angle",
+    "rad/s": "angular speed", "Hz": "frequency", "rad/s^2": "angular acceleration",
+    "m/s": "speed", "m/s^2": "acceleration", "N": "force", "J": "torque or energy", "W": "power",
+    "Pa": "pressure or stress", "kg/m": "mass per unit length", "m^2": "area", "m^3": "volume",
+    "kg/m^3": "density", "kg*m^2": "moment of inertia", "kg*m": "mass times radius",
+    "N/m": "stiffness", "N*s/m": "damping coefficient",
 }
+
+
+@lru_cache(maxsize=1)
+def _kinds() -> dict[tuple[str, int], str]:
+    infos = {example: unit_info(example) for example in _KIND_EXAMPLES}
+    return {(info.dims, info.angle): _KIND_EXAMPLES[example] for example, info in infos.items()}
 
 
 def describe(dims: str, angle: int = 0) -> str:
     """A word for a dimension that a student understands ("force", not "[length] * [mass] / [time] ** 2")."""
-    return _KINDS.get((dims, angle)) or _KINDS.get((dims, 0)) or f"quantity of dimension {dims}"
+    kinds = _kinds()
+    return kinds.get((dims, angle)) or kinds.get((dims, 0)) or f"quantity of dimension {dims}"
 
 
 def to_si(value: float, unit: str) -> float:
@@ -147,7 +154,7 @@ def parse_quantity(text: str) -> Reading:
     """Read "1.2 kN", "-3.5e2", "5 %", "θ = 168.8°" or "2.4 × 10^3 N" without evaluating anything."""
     if len(text) > MAX_ANSWER_LENGTH:
         raise QuantityError(f"answer longer than {MAX_ANSWER_LENGTH} characters")
-    cleaned = _SUPERSCRIPT_POWER.sub(r"^-\1", text.translate(_TRANSLATE)).strip()
+    cleaned = _plain(text).strip()
     cleaned = _LABEL.sub("", cleaned, count=1)
     if re.fullmatch(r"[+-]?\d{1,3},\d{3}(?:\D.*)?", cleaned):
         raise QuantityError(f"{text.strip()!r} is ambiguous: write it without the comma (or with a point for decimals)")
@@ -161,7 +168,7 @@ def parse_quantity(text: str) -> Reading:
         raise QuantityError(f"{text.strip()!r} is not a finite number")
     if not unit:
         return Reading(value, None)
-    if len(unit) > MAX_UNIT_LENGTH or not _UNIT_CHARS.fullmatch(unit.replace("degree", "deg")):
+    if len(unit) > MAX_UNIT_LENGTH or not _UNIT_CHARS.fullmatch(unit) or _BIG_POWER.search(unit):
         raise QuantityError(f"cannot read the unit in {text.strip()!r}")
     unit_info(unit)  # raises QuantityError naming the unit
     return Reading(value, unit)

@@ -1,0 +1,102 @@
+"""A malformed template fails loading with an error naming the file, the key and the line."""
+from pathlib import Path
+
+import pytest
+
+from exgen.bank import _load_bank, load_template
+from exgen.errors import BankError, UnknownTemplate
+
+GOOD = """\
+id: demo.good
+title: A good template
+chapter: 1
+solver: belts:driven_speed
+params:
+  N1: {min: 720, max: 1800, step: 20, unit: rpm}
+  d1: {min: 20, max: 50, step: 1, unit: cm}
+  d2: {min: 40, max: 120, step: 5, unit: cm}
+  G1: {choices: [1, 2], unit: percent}
+  G2: {choices: [1, 2], unit: percent}
+  t:  {value: 8, unit: mm}
+require: ["d2 > d1"]
+statement: A motor at {{ N1 }} drives a pulley of {{ d2 }} from one of {{ d1 }}.
+parts:
+  - {id: a, ask: the speed, answer: N2_slip, unit: rpm}
+"""
+
+
+def write(tmp_path: Path, text: str, name="t.yaml") -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def problems(path: Path) -> list[str]:
+    with pytest.raises(BankError) as info:
+        load_template(path)
+    return [str(e) for e in info.value.errors]
+
+
+def test_good_template_loads(tmp_path):
+    template = load_template(write(tmp_path, GOOD))
+    assert template.id == "demo.good" and template.param("t").choices[0] == 8
+    assert len(template.version) == 64
+
+
+@pytest.mark.parametrize("old, new, expected", [
+    ("title: A good template\n", "", "t.yaml: title: is required"),
+    ("chapter: 1", "chapter: one", "t.yaml:3: chapter: must be a whole number"),
+    ("solver: belts:driven_speed", "solver: belts:no_such", "t.yaml:4: solver: exgen.solvers.belts has no function 'no_such'"),
+    ("solver: belts:driven_speed", "solver: os:system", "t.yaml:4: solver: no module exgen.solvers.os"),
+    ("step: 20, unit: rpm", "step: 7, unit: rpm", "t.yaml:6: params.N1.step: (max - min) = 1080 is not a whole number of steps of 7"),
+    ("min: 20, max: 50", "min: 50, max: 20", "t.yaml:7: params.d1: needs min <= max and step > 0"),
+    ("{min: 40, max: 120, step: 5, unit: cm}", "{min: 40, max: 120, stp: 5, unit: cm}", "t.yaml:8: params.d2.stp: unknown key"),
+    ('["d2 > d1"]', '["d2 > d9"]', "t.yaml:12: require.0: names no parameter: d9"),
+    ('["d2 > d1"]', '["d2 >"]', "t.yaml:12: require.0: cannot read 'd2 >' as an expression"),
+    ("{{ d1 }}.", "{{ d3 }}.", "t.yaml:13: statement: refers to unknown parameter(s): d3"),
+    ("{{ d1 }}.", "{{ d1 }.", "t.yaml:13: statement: template syntax error on line 1"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, type: vector}", "t.yaml:15: parts.0.type: 'vector' is not one of"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, uses: [b]}", "t.yaml:15: parts.0.uses: 'b' is not an earlier part"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, tol: {rel: -1}}", "t.yaml:15: parts.0.tol.rel: must be a number >= 0"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, points: 0}", "t.yaml:15: parts.0.points: must be a positive number"),
+])
+def test_each_problem_names_file_key_and_line(tmp_path, old, new, expected):
+    assert old in GOOD
+    found = problems(write(tmp_path, GOOD.replace(old, new)))
+    assert any(expected in p for p in found), found
+
+
+def test_all_problems_in_a_file_are_reported_at_once(tmp_path):
+    text = GOOD.replace("chapter: 1", "chapter: one").replace("{{ d1 }}.", "{{ d3 }}.").replace("title: A good template\n", "")
+    assert len(problems(write(tmp_path, text))) == 3
+
+
+def test_unknown_top_level_key(tmp_path):
+    assert any("parmas: unknown key" in p for p in problems(write(tmp_path, GOOD + "parmas: {}\n")))
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("id: [unclosed", "not valid YAML"),
+    ("- just\n- a list\n", "a template file must be a mapping"),
+    ("!!python/object/apply:os.system ['echo hi']", "not valid YAML"),
+])
+def test_not_a_template_at_all(tmp_path, text, expected):
+    assert any(expected in p for p in problems(write(tmp_path, text)))
+
+
+def test_duplicate_ids_across_files_are_reported(tmp_path):
+    write(tmp_path, GOOD, "one.yaml")
+    write(tmp_path, GOOD, "two.yaml")
+    with pytest.raises(BankError, match="'demo.good' is also defined in"):
+        _load_bank((tmp_path,))
+
+
+def test_unknown_template_suggests(bank):
+    with pytest.raises(UnknownTemplate, match="no template with id 'belts.flat_power'.*"):
+        bank.get("belts.flat_power")
+
+
+def test_packaged_bank_loads(bank):
+    assert {t.id for t in bank} >= {
+        "belts.flat_belt_power", "belts.v_belt_power", "belts.driven_pulley_diameter", "belts.driven_speed_slip",
+        "belts.compound_drive", "belts.drive_geometry", "belts.max_power", "belts.v_belt_count"}
