@@ -1,0 +1,102 @@
+"""Grade answer files against the sheets they answer: one sheet, or a directory of them.
+
+Each student's sheet is rebuilt from (assignment, student, secret), so a student is always
+graded against their own numbers; the code in the answer file is only checked, never trusted.
+"""
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+from typing import Callable, Iterable, Mapping
+
+from exgen.assignment import Assignment, Sheet, Student, build_sheet, load_roster
+from exgen.bank import Bank
+from exgen.errors import ExgenError
+
+from .answers import Submission
+from .collect import Entry, collect
+from .marking import QuestionMarker
+from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, UNREADABLE_FILE, BatchResult, Column, FileProblem,
+                      SheetResult)
+
+CODE_MISMATCH = ("This answer file carries the sheet code {given}, but your sheet's code is {code}: it may "
+                 "belong to another sheet. It was graded against your own sheet.")
+OTHER_ASSIGNMENT = "This answer file is for the assignment {given!r}, not {expected!r}; it was graded as {expected!r}."
+UNKNOWN_QUESTION = "The answer file answers {slot!r}, which is not a question on your sheet; ignored."
+UNKNOWN_PART = "The answer file answers part {part!r} of {slot}, which has no such part; ignored."
+NO_FILE = "No answer file was handed in."
+UNREADABLE = "Your answer file could not be read: {reason}"
+NO_SHEET = "The sheet could not be rebuilt for grading: {reason}"
+
+Progress = Callable[[Iterable, int], Iterable]
+
+
+def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
+    """Grade every part of every question; a differing sheet code is a warning, not a refusal."""
+    warnings = list(submission.warnings)
+    if submission.code and _norm(submission.code) != _norm(sheet.code):  # graded all the same
+        warnings.append(CODE_MISMATCH.format(given=submission.code[:40], code=sheet.code))
+    if submission.assignment and submission.assignment != sheet.assignment.id:
+        warnings.append(OTHER_ASSIGNMENT.format(given=submission.assignment[:40], expected=sheet.assignment.id))
+    answers, problems = _by_key(submission.answers), _by_key(submission.problems)
+    results, used = [], set()
+    for question in sheet.questions:
+        key = next((k for k in (question.slot, str(question.number), f"q{question.number}")
+                    if _norm(k) in answers or _norm(k) in problems), question.slot)
+        used.add(_norm(key))
+        given, trouble = _by_key(answers.get(_norm(key), {})), _by_key(problems.get(_norm(key), {}))
+        parts = {_norm(p.id): p.id for p in question.variant.template.parts}
+        warnings += [UNKNOWN_PART.format(part=k[:20], slot=question.slot) for k in {**given, **trouble}
+                     if k and k not in parts]
+        results.append(QuestionMarker(question).mark(
+            {parts[k]: v for k, v in given.items() if k in parts},
+            {parts.get(k, k): v for k, v in trouble.items()}))
+    warnings += [UNKNOWN_QUESTION.format(slot=k[:20]) for k in {**answers, **problems} if k not in used]
+    mismatch = bool(submission.code) and _norm(submission.code) != _norm(sheet.code)
+    return SheetResult(sheet.student, GRADED, sheet.points, sheet.code, tuple(results), tuple(warnings),
+                       submission.path, mismatch)
+
+
+def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_dir: Path,
+                roster: list[Student] | Path | None = None, progress: Progress | None = None) -> BatchResult:
+    """Grade every answer file in a directory; one broken file never stops the rest."""
+    if isinstance(roster, (str, Path)):
+        roster = load_roster(Path(roster))
+    columns = tuple(Column(i, spec.slot, spec.template, spec.points or bank.get(spec.template).points)
+                    for i, spec in enumerate(assignment.questions, start=1))
+    max_points = sum(c.max_points for c in columns)
+    entries, problems = collect(Path(submissions_dir), roster)
+    loop = progress(entries, len(entries)) if progress else entries
+    sheets = []
+    for entry in loop:
+        sheet_result = _grade_entry(entry, assignment, bank, secret, max_points)
+        if sheet_result.status == NOT_GRADED:
+            problems.append(FileProblem(entry.path or Path(submissions_dir), sheet_result.warnings[-1],
+                                        entry.student.id))
+        sheets.append(sheet_result)
+    return BatchResult(assignment, columns, tuple(sheets), tuple(problems))
+
+
+def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float) -> SheetResult:
+    notes = tuple(entry.notes)
+    if entry.path is None:
+        return SheetResult(entry.student, NO_SUBMISSION, max_points, warnings=(NO_FILE,))
+    if entry.submission is None:
+        return SheetResult(entry.student, UNREADABLE_FILE, max_points,
+                           warnings=notes + (UNREADABLE.format(reason=entry.error),), path=entry.path)
+    try:
+        sheet = build_sheet(assignment, entry.student, bank, secret)
+    except ExgenError as exc:
+        return SheetResult(entry.student, NOT_GRADED, max_points, warnings=notes + (NO_SHEET.format(reason=exc),),
+                           path=entry.path)
+    result = grade_sheet(sheet, entry.submission)
+    return dataclasses.replace(result, warnings=notes + result.warnings)
+
+
+def _norm(key: str) -> str:
+    """'(a)', 'a)', ' A ' -> 'a'; 'Q1' -> 'q1': how students write part and question names."""
+    return str(key).strip().strip("().:").strip().lower()
+
+
+def _by_key(mapping: Mapping[str, object]) -> dict[str, object]:
+    return {_norm(k): v for k, v in mapping.items()}

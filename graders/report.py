@@ -1,0 +1,158 @@
+"""Write a graded batch out: the gradebook CSV, one feedback page per student, and the instructor's report.
+
+Everything is gathered before anything is written; text a student typed is shortened and
+escaped wherever it lands (a Markdown page may end up as HTML in a learning system).
+"""
+from __future__ import annotations
+
+import csv
+import html
+import re
+from collections import Counter
+from pathlib import Path
+
+from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
+                      SheetResult)
+
+MARK = {True: "\u2713", False: "\u2717"}
+SHOWN_ANSWER_LENGTH = 60
+COMMON_MISTAKES = 3
+_CONTROL = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+_SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+
+
+def write_results(batch: BatchResult, out_dir: Path) -> dict[str, Path]:
+    """gradebook.csv, feedback/<student>.md and report.md under `out_dir`; returns their paths."""
+    out_dir = Path(out_dir)
+    feedback = {s.student.id: feedback_page(batch, s) for s in batch.sheets}
+    report = report_page(batch)
+    (out_dir / "feedback").mkdir(parents=True, exist_ok=True)
+    paths = {"gradebook": out_dir / "gradebook.csv", "report": out_dir / "report.md",
+             "feedback": out_dir / "feedback"}
+    write_gradebook(batch, paths["gradebook"])
+    for student_id, page in feedback.items():
+        (paths["feedback"] / f"{student_id}.md").write_text(page, encoding="utf-8")
+    paths["report"].write_text(report, encoding="utf-8")
+    return paths
+
+
+# ---- gradebook ----------------------------------------------------------------------------------
+
+def write_gradebook(batch: BatchResult, path: Path) -> None:
+    header = ["student", "name", "email"] + [f"{c.slot} (/{_num(c.max_points)})" for c in batch.columns]
+    header += ["total", "max", "percent", "status"]
+    with path.open("w", encoding="utf-8", newline="") as handle:
+        writer = csv.writer(handle)
+        writer.writerow(header)
+        for sheet in batch.sheets:
+            marks = []
+            for column in batch.columns:
+                question = sheet.question(column.slot)
+                marks.append(_num(question.points if question else 0.0))
+            writer.writerow([_cell(sheet.student.id), _cell(sheet.student.name), _cell(sheet.student.email),
+                             *marks, _num(sheet.points), _num(sheet.max_points), f"{sheet.percent:.1f}",
+                             sheet.status])
+
+
+def _cell(text: str) -> str:
+    """Text a spreadsheet will not run as a formula."""
+    return "'" + text if text.startswith(_SPREADSHEET_FORMULA) else text
+
+
+def _num(value: float) -> str:
+    return f"{value:.2f}".rstrip("0").rstrip(".") if value else "0"
+
+
+# ---- feedback -----------------------------------------------------------------------------------
+
+def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
+    who = sheet.student.id + (f" ({_escape(sheet.student.name)})" if sheet.student.name else "")
+    lines = [f"# Feedback: {_escape(batch.assignment.title)}", "",
+             f"Student: {who}" + (f" · Sheet code: {sheet.code}" if sheet.code else ""),
+             f"Total: **{_num(sheet.points)} / {_num(sheet.max_points)}** ({sheet.percent:.1f} %)"
+             + ("" if sheet.status == GRADED else f" · {sheet.status}"), ""]
+    for warning in sheet.warnings:
+        lines += [f"> **Note:** {_escape(warning)}", ""]
+    for question in sheet.questions:
+        lines += [f"## Q{question.number}. {_escape(question.title)} ({_num(question.points)} / "
+                  f"{_num(question.max_points)})", ""]
+        for part in question.parts:
+            lines += _part_block(part)
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _part_block(part: PartResult) -> list[str]:
+    given = f"`{_shown(part.given)}`" if part.given.strip() else "(blank)"
+    return [
+        f"**({part.part}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask)}  ",
+        f"Your answer: {given} · expected: {part.expected}  ",
+        _escape(_sentence(part.message)), "",
+    ]
+
+
+def _shown(text: str) -> str:
+    """A student's answer, safe inside a Markdown code span: one line, short, no backticks."""
+    text = " ".join(_CONTROL.sub(" ", text).split()).replace("`", "'")
+    if len(text) > SHOWN_ANSWER_LENGTH:
+        text = text[: SHOWN_ANSWER_LENGTH - 1] + "\u2026"
+    return text or " "
+
+
+def _escape(text: str) -> str:
+    return html.escape(" ".join(_CONTROL.sub(" ", str(text)).split()), quote=False)
+
+
+def _sentence(message: str) -> str:
+    message = message.strip()
+    return (message[:1].upper() + message[1:] + ("" if message.endswith((".", "!", "?")) else ".")) if message else ""
+
+
+# ---- the instructor's report --------------------------------------------------------------------
+
+def report_page(batch: BatchResult) -> str:
+    counts = batch.by_status()
+    lines = [f"# Grading report: {_escape(batch.assignment.title)}", "",
+             f"Sheets: {len(batch.sheets)} ({', '.join(f'{n} {s}' for s, n in sorted(counts.items())) or 'none'})"]
+    summary = batch.percent_summary()
+    if summary:
+        lines.append(f"Marks of graded sheets: mean {summary[0]:.1f} %, median {summary[1]:.1f} % "
+                     f"(out of {_num(batch.max_points)} points)")
+    lines += ["", "## Parts", "",
+              "| Question | Part | Correct | of which carried | Wrong | Blank | Unreadable | Most common mistakes |",
+              "|---|---|---:|---:|---:|---:|---:|---|"]
+    lines += _item_rows(batch)
+    warned = [s for s in batch.sheets if s.code_mismatch]
+    if warned:
+        lines += ["", "## Sheet code warnings", ""] + [f"- {s.student.id}" for s in warned]
+    lines += ["", "## Problem files", ""]
+    lines += [f"- `{_shown(str(p.path))}`{' (' + p.student + ')' if p.student else ''}: {_escape(p.reason)}"
+              for p in batch.problems] or ["None."]
+    return "\n".join(lines) + "\n"
+
+
+def _item_rows(batch: BatchResult) -> list[str]:
+    """Per part, over graded sheets: how many got it right, and the mistakes most often named."""
+    tally: dict[tuple[int, str, str], Counter] = {}
+    mistakes: dict[tuple[int, str, str], Counter] = {}
+    for sheet in batch.sheets:
+        if sheet.status != GRADED:
+            continue
+        for question in sheet.questions:
+            for part in question.parts:
+                key = (question.number, question.slot, part.part)
+                tally.setdefault(key, Counter())[part.status] += 1
+                if part.mistake:
+                    mistakes.setdefault(key, Counter())[part.mistake] += 1
+    rows = []
+    for key in sorted(tally):
+        count = tally[key]
+        total = sum(count.values())
+        common = ", ".join(f"{name} ({n})" for name, n in mistakes.get(key, Counter()).most_common(COMMON_MISTAKES))
+        rows.append(f"| {key[1]} | {key[2]} | {_pct(count[CORRECT] + count[CARRIED], total)} | "
+                    f"{count[CARRIED]} | {count[WRONG]} | {count[BLANK]} | {count[UNREADABLE]} | {common or '-'} |")
+    return rows
+
+
+def _pct(n: int, total: int) -> str:
+    return f"{100 * n / total:.0f} % ({n}/{total})" if total else "-"
+

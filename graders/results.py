@@ -1,0 +1,121 @@
+"""What grading produces: per part, per question, per sheet and per batch. Read by the report writers."""
+from __future__ import annotations
+
+import statistics
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from exgen.assignment import Assignment, Student
+
+# Part statuses. A format problem ("unreadable") is kept apart from a wrong answer.
+CORRECT = "correct"
+CARRIED = "carried"      # right from the student's own earlier answers (error carried forward)
+WRONG = "wrong"
+BLANK = "blank"
+UNREADABLE = "unreadable"
+PART_STATUSES = (CORRECT, CARRIED, WRONG, BLANK, UNREADABLE)
+
+# Sheet statuses.
+GRADED = "graded"
+NO_SUBMISSION = "no submission"
+UNREADABLE_FILE = "unreadable file"
+NOT_GRADED = "not graded"  # the sheet itself could not be rebuilt (a bank or secret problem)
+
+
+@dataclass(frozen=True)
+class PartResult:
+    part: str
+    ask: str
+    unit: str
+    given: str
+    expected: str
+    status: str
+    points: float
+    max_points: float
+    message: str
+    mistake: str | None = None
+
+    @property
+    def correct(self) -> bool:
+        return self.status in (CORRECT, CARRIED)
+
+
+@dataclass(frozen=True)
+class QuestionResult:
+    number: int
+    slot: str
+    title: str
+    template: str
+    parts: tuple[PartResult, ...]
+    max_points: float
+
+    @property
+    def points(self) -> float:
+        return sum(p.points for p in self.parts)
+
+
+@dataclass(frozen=True)
+class SheetResult:
+    student: Student
+    status: str
+    max_points: float
+    code: str = ""
+    questions: tuple[QuestionResult, ...] = ()
+    warnings: tuple[str, ...] = ()
+    path: Path | None = None
+    code_mismatch: bool = False  # the answer file's sheet code is not this sheet's
+
+    @property
+    def points(self) -> float:
+        return sum(q.points for q in self.questions)
+
+    @property
+    def percent(self) -> float:
+        return 100.0 * self.points / self.max_points if self.max_points else 0.0
+
+    def question(self, slot: str) -> QuestionResult | None:
+        return next((q for q in self.questions if q.slot == slot), None)
+
+
+@dataclass(frozen=True)
+class FileProblem:
+    """An answer file the batch could not use, and why (unreadable, unknown student, a duplicate)."""
+
+    path: Path
+    reason: str
+    student: str = ""
+
+
+@dataclass(frozen=True)
+class Column:
+    """One question of the assignment, as a gradebook column."""
+
+    number: int
+    slot: str
+    template: str
+    max_points: float
+
+
+@dataclass(frozen=True)
+class BatchResult:
+    assignment: Assignment
+    columns: tuple[Column, ...]
+    sheets: tuple[SheetResult, ...]
+    problems: tuple[FileProblem, ...] = field(default=())
+
+    @property
+    def max_points(self) -> float:
+        return sum(c.max_points for c in self.columns)
+
+    def by_status(self) -> dict[str, int]:
+        counts: dict[str, int] = {}
+        for sheet in self.sheets:
+            counts[sheet.status] = counts.get(sheet.status, 0) + 1
+        return counts
+
+    def percent_summary(self) -> tuple[float, float] | None:
+        """Mean and median percentage over the sheets that were graded."""
+        marks = [s.percent for s in self.sheets if s.status == GRADED]
+        if not marks:
+            return None
+        return statistics.fmean(marks), statistics.median(marks)
