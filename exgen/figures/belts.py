@@ -6,77 +6,29 @@ printed on the sheet; an unknown is drawn to its solved size and labelled "?".
 """
 from __future__ import annotations
 
-import math
-
-from ..errors import ExgenError
-from .groove import INSET_H, INSET_W, groove_inset
-from .svg import FONT_SIZE, LINE, THIN, Drawing, lerp, on_circle, text_width
+from .groove import groove_inset
+from .pulleys import (ARC_GAP, BELT_GAP, BELT_W, GAP, belt_motion, centre_distance, circle_path, diameter_mark,
+                      hidden, label_stack, need, pulley, run_label)
+from .svg import Drawing, subscripted
 from .tangents import belt_loop
-from .values import Shown, choice, shown
+from .values import choice, shown
 
 GEOM_W = 420.0       # px from the driver's far rim to the driven pulley's far rim
+COMPOUND_W = 560.0   # the same for the two stages of a compound drive
 MAX_D_PX = 250.0     # cap on a pulley's drawn diameter
-BELT_GAP = 2.2       # belt centre line outside the pulley rim
-BELT_W = 2.6
-ROW = 19.0           # text line spacing
-GAP = 10.0           # clearance between a label and what it names
-CENTRE_DASH = "10 3 2 3"
-
-
-def _need(variant, name: str) -> Shown:
-    found = shown(variant, name)
-    if found is None or not math.isfinite(found.si) or found.si <= 0:
-        raise ExgenError(f"{variant.template.id}: the belt figure needs a positive {name!r} "
-                         "(a parameter, or a step when it is the unknown)")
-    return found
-
-
-def pulley(drawing: Drawing, c, r: float, cls: str, front: bool = True) -> None:
-    """A pulley seen along its shaft: rim, hub and centre mark."""
-    drawing.circle(c, r, LINE, fill="white", cls=f"pulley {cls}")
-    hub = max(3.5, 0.14 * r)
-    drawing.circle(c, hub, THIN)
-    drawing.centre_mark(c, hub + 4)
-
-
-def diameter_mark(drawing: Drawing, c, r: float, angle_deg: float = 45.0) -> None:
-    """A diameter dimension across the pulley, arrowheads on the rim."""
-    a = math.radians(angle_deg)
-    drawing.dimension(on_circle(c, r, math.pi - a), on_circle(c, r, -a))
-
-
-def _label_stack(drawing: Drawing, c, radius: float, lines: list[str], clockwise: bool) -> float:
-    """Rotation arrow round the top of a pulley and the labels above it; returns the top y used."""
-    arc = radius + 10
-    drawing.rotation_arrow(c, arc, clockwise)
-    y = c[1] - arc - 9
-    for i, text in enumerate(reversed(lines)):
-        weight = "bold" if i == len(lines) - 1 else ""
-        drawing.text((c[0], y), text, weight=weight)
-        y -= ROW
-    return y + ROW - FONT_SIZE
-
-
-def stack_height(radius: float, lines: int) -> float:
-    return radius + 10 + 9 + (lines - 1) * ROW + FONT_SIZE + 6
+STAGE_GAP = 0.6      # compound drive: clear space between pulleys, as a fraction of the largest diameter
 
 
 def belt_drive(variant) -> str:
     """An open or crossed belt drive with d₁, d₂, X, the driver speed and the tight side."""
-    d1, d2, x = _need(variant, "d1"), _need(variant, "d2"), _need(variant, "X")
+    d1, d2, x = need(variant, "d1"), need(variant, "d2"), need(variant, "X")
     n1, n2, groove = shown(variant, "N1"), shown(variant, "N2"), shown(variant, "groove")
     crossed = choice(variant, "drive", "open") == "crossed"
-    scale = min(GEOM_W / (d1.si / 2 + x.si + d2.si / 2), MAX_D_PX / max(d1.si, d2.si))
+    span = GEOM_W if groove is None else GEOM_W - 60  # leave room for the groove inset
+    scale = min(span / (d1.si / 2 + x.si + d2.si / 2), MAX_D_PX / max(d1.si, d2.si))
     r1, r2 = d1.si / 2 * scale, d2.si / 2 * scale
     rb1, rb2 = r1 + BELT_GAP, r2 + BELT_GAP
-    top1 = ["Driver"] + ([n1.label()] if n1 else [])
-    top2 = ["Driven"] + ([n2.label()] if n2 else [])
-    label1, label2 = d1.label(), d2.label()
-    left = max(text_width(label1) + GAP + 4, max(map(text_width, top1)) / 2 - rb1, 0) + 8
-    cx1 = left + rb1
-    cx2 = cx1 + x.si * scale
-    cy = max(stack_height(rb1, len(top1)), stack_height(rb2, len(top2)))
-    c1, c2 = (cx1, cy), (cx2, cy)
+    c1, c2 = (0.0, 0.0), (x.si * scale, 0.0)
 
     drawing = Drawing()
     loop = belt_loop(c1, rb1, c2, rb2, crossed)
@@ -85,47 +37,70 @@ def belt_drive(variant) -> str:
     drawing.path(loop.path, BELT_W, cls="belt")
     diameter_mark(drawing, c1, r1)
     diameter_mark(drawing, c2, r2)
-    drawing.text((cx1 - rb1 - GAP, cy + 5), label1, anchor="end", cls="label-d1")
-    drawing.text((cx2 + rb2 + GAP, cy + 5), label2, anchor="start", cls="label-d2")
-    _label_stack(drawing, c1, rb1, top1, clockwise=True)
-    _label_stack(drawing, c2, rb2, top2, clockwise=not crossed)
-
-    # Belt motion: the driver winds in the tight run.
-    t_at, s_at = (0.5, 0.5) if not crossed else (0.72, 0.28)
-    tight_mid = lerp(*loop.tight, t_at)
-    slack_mid = lerp(*loop.slack, s_at)
-    tight_dir = (loop.tight[1][0] - loop.tight[0][0], loop.tight[1][1] - loop.tight[0][1])
-    slack_dir = (loop.slack[1][0] - loop.slack[0][0], loop.slack[1][1] - loop.slack[0][1])
-    drawing.arrowhead(lerp(tight_mid, loop.tight[1], 0.04), tight_dir, 10)
-    drawing.arrowhead(lerp(slack_mid, loop.slack[1], 0.04), slack_dir, 10)
-    bottom = cy + max(rb1, rb2)
+    # Rotation arrows on the free sides: the driver turns clockwise; a crossed belt reverses the driven.
+    drawing.rotation_arrow(c1, rb1 + ARC_GAP, True, 130, 230)
+    drawing.rotation_arrow(c2, rb2 + ARC_GAP, not crossed, -50, 50)
+    drawing.text((-rb1 - ARC_GAP - GAP, 5), d1.label(), anchor="end", cls="label-d1")
+    drawing.text((c2[0] + rb2 + ARC_GAP + GAP, 5), d2.label(), anchor="start", cls="label-d2")
+    runs = (loop.tight, loop.slack)
+    label_stack(drawing, c1, rb1, ["Driver"] + ([n1.label()] if n1 else []), runs)
+    label_stack(drawing, c2, rb2, ["Driven"] + ([n2.label()] if n2 else []), runs)
     if crossed:
-        near = lerp(*loop.tight, 0.12)
-        drawing.text((near[0] - 8, near[1] - 6), "tight side", anchor="end", style="italic", cls="tight")
+        k = rb1 / (rb1 + rb2)  # the runs cross this far along from the driver
+        belt_motion(drawing, loop, ((1 - k) / 2, (1 + k) / 2))
+        run_label(drawing, loop.tight, (1 - k) / 2, "tight side", below=False)
     else:
-        slope = abs(tight_dir[1] / tight_dir[0]) if tight_dir[0] else 0.0
-        y = tight_mid[1] + slope * text_width("tight side") / 2 + 6 + FONT_SIZE * 0.8
-        drawing.text((tight_mid[0], y), "tight side", style="italic", cls="tight")
-        bottom = max(bottom, y)
-
-    # Centre distance: centre lines down to a dimension line below the drive.
-    y_dim = bottom + 16
-    for c, r in ((c1, rb1), (c2, rb2)):
-        drawing.line((c[0], c[1] + r + 4), (c[0], y_dim + 6), THIN, dash=CENTRE_DASH)
-    drawing.dimension((cx1, y_dim), (cx2, y_dim))
-    drawing.text(((cx1 + cx2) / 2, y_dim + FONT_SIZE + 3), x.label("X"), cls="label-X")
-
-    width = cx2 + max(rb2 + GAP + text_width(label2), max(map(text_width, top2)) / 2) + 8
-    height = y_dim + FONT_SIZE + 10
+        belt_motion(drawing, loop, (0.5, 0.5))
+        run_label(drawing, loop.tight, 0.5, "tight side", below=True)
+    centre_distance(drawing, c1, rb1, c2, rb2, drawing.box[3] + 14, x.label("X"))
     if groove is not None:
-        groove_inset(drawing, width, 6, groove.si, groove.label("2\u03b2"))
-        width += INSET_W
-        height = max(height, INSET_H + 6)
+        groove_inset(drawing, drawing.box[2] + 16, drawing.box[1], groove.si, groove.label("2\u03b2"))
     kind = "Crossed" if crossed else "Open"
-    belt = "V-belt" if groove is not None else "belt"
-    return drawing.svg(width, height, f"{kind} {belt} drive")
+    return drawing.svg(f"{kind} {'V-belt' if groove is not None else 'belt'} drive")
 
 
 def compound_drive(variant) -> str:
-    """Two belt stages (Problem 1.4): motor d₁ -> main shaft d₂; d₃ on the main shaft -> countershaft d₄."""
-    raise ExgenError(f"{variant.template.id}: the compound drive figure is not drawn yet")
+    """Two belt stages (Problem 1.4): motor d₁ -> main shaft d₂; d₃ on the main shaft -> countershaft d₄.
+
+    Seen along the shafts, d₂ is in front of d₃ on the main shaft: what it hides of d₃ and of
+    the second belt is drawn dashed. Centre distances are not data here; they are chosen
+    from the diameters so both belts show clearly.
+    """
+    d = [need(variant, f"d{i}") for i in range(1, 5)]
+    largest = max(q.si for q in d)
+    x1 = (d[0].si + d[1].si) / 2 + STAGE_GAP * largest
+    x2 = (d[2].si + d[3].si) / 2 + STAGE_GAP * largest
+    scale = min(COMPOUND_W / (d[0].si / 2 + x1 + x2 + d[3].si / 2), MAX_D_PX / largest)
+    r = [q.si / 2 * scale for q in d]
+    rb = [v + BELT_GAP for v in r]
+    motor, main, counter = (0.0, 0.0), (x1 * scale, 0.0), ((x1 + x2) * scale, 0.0)
+
+    drawing = Drawing()
+    back = belt_loop(main, rb[2], counter, rb[3])
+    pulley(drawing, main, r[2], "d3")
+    pulley(drawing, counter, r[3], "countershaft")
+    drawing.path(back.path, BELT_W, cls="belt")
+    front = belt_loop(motor, rb[0], main, rb[1])
+    pulley(drawing, main, r[1], "d2")
+    hidden(drawing, "behind-d2", main, r[1], [(circle_path(main, r[2]), 1.0), (back.path, 1.6)])
+    pulley(drawing, motor, r[0], "motor")
+    drawing.path(front.path, BELT_W, cls="belt")
+    for loop in (front, back):
+        belt_motion(drawing, loop, (0.5, 0.5))
+    diameter_mark(drawing, motor, r[0])
+    # Nearly level, so the tags sit where no belt runs: d₂ left of the main shaft, d₃ right of it.
+    diameter_mark(drawing, main, r[1], 15, subscripted("d2"), "left", inside=r[2] > r[1])
+    diameter_mark(drawing, main, r[2], -15, subscripted("d3"), "right")
+    diameter_mark(drawing, counter, r[3])
+    drawing.rotation_arrow(motor, rb[0] + ARC_GAP, True, 130, 230)
+    drawing.rotation_arrow(counter, rb[3] + ARC_GAP, True, -50, 50)
+
+    runs = (front.tight, front.slack, back.tight, back.slack)
+    speeds = [shown(variant, name) for name in ("N1", "N2", "N4")]
+    titles = ("Motor", "Main shaft", "Countershaft")
+    for c, radius, title, speed in zip((motor, main, counter), (rb[0], max(rb[1], rb[2]), rb[3]), titles, speeds):
+        label_stack(drawing, c, radius, [title] + ([speed.label()] if speed else []), runs)
+    below = ([d[0].label()], [d[1].label(), d[2].label()], [d[3].label()])
+    for c, radius, lines in zip((motor, main, counter), (rb[0], max(rb[1], rb[2]), rb[3]), below):
+        label_stack(drawing, c, radius, lines, runs, above=False)
+    return drawing.svg("Compound belt drive: motor, main shaft and countershaft")
