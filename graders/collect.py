@@ -1,7 +1,8 @@
 """Find the answer files in a directory and decide whose each one is.
 
-A file names its student (`student:`); if it does not, its file name does ("s001.yaml", or with a
-roster "s001_answers.yaml"). Files that cannot be read, belong to no one on the roster, or are
+Files may lie in the directory itself or one folder down (as learning systems download them:
+"s001/answers.yaml"). A file names its student (`student:`); if it does not, its file name or
+its folder does ("s001.yaml", "s001/answers.yaml", or with a roster "s001_answers.yaml"). Files that cannot be read, belong to no one on the roster, or are
 one of several from one student are reported, never fatal: the batch goes on.
 """
 from __future__ import annotations
@@ -19,6 +20,9 @@ from .results import FileProblem
 
 #: What a student id may look like (it names the feedback file): as exgen.assignment requires.
 SAFE_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
+
+#: Files grading itself writes, never read back as answers.
+OUTPUT_FILES = {"gradebook.csv"}
 
 NOT_ON_ROSTER = "student {student!r} is not on the roster; the file was skipped"
 WHOSE_FILE = "cannot tell whose file this is: it names no valid student id and neither does its file name"
@@ -39,9 +43,14 @@ class Entry:
 
 
 def answer_files(directory: Path) -> list[Path]:
-    """Answer files directly in `directory` (not its subdirectories), hidden files skipped."""
-    return sorted(p for p in Path(directory).iterdir()
-                  if p.suffix.lower() in SUFFIXES and not p.name.startswith(".") and p.is_file())
+    """Answer files in `directory` and its immediate folders; hidden ones and our own outputs skipped."""
+    directory = Path(directory)
+    found = []
+    for path in sorted(directory.glob("*")) + sorted(directory.glob("*/*")):
+        hidden = any(p.startswith(".") for p in path.relative_to(directory).parts)
+        if path.suffix.lower() in SUFFIXES and path.name not in OUTPUT_FILES and not hidden and path.is_file():
+            found.append(path)
+    return found
 
 
 def collect(directory: Path, roster: list[Student] | None = None) -> tuple[list[Entry], list[FileProblem]]:
@@ -54,12 +63,10 @@ def collect(directory: Path, roster: list[Student] | None = None) -> tuple[list[
             submission, error = read_submission(path), ""
         except SubmissionError as exc:
             submission, error = None, (f"line {exc.line}: {exc.detail}" if exc.line else exc.detail)
-        student_id, note = _whose(path, submission, known)
-        if not student_id:
-            problems.append(FileProblem(path, error or WHOSE_FILE))
-            continue
-        if known is not None and student_id not in known:
-            problems.append(FileProblem(path, NOT_ON_ROSTER.format(student=student_id), student_id))
+        student_id, note = _whose(path, submission, known, Path(directory))
+        if not student_id or (known is not None and student_id not in known):
+            unmatched = NOT_ON_ROSTER.format(student=student_id) if student_id else WHOSE_FILE
+            problems.append(FileProblem(path, f"{error} ({unmatched})" if error else unmatched))
             continue
         if error:
             problems.append(FileProblem(path, error, student_id))
@@ -75,12 +82,13 @@ def collect(directory: Path, roster: list[Student] | None = None) -> tuple[list[
     return entries, problems
 
 
-def _whose(path: Path, submission: Submission | None, known: dict | None) -> tuple[str, str]:
+def _whose(path: Path, submission: Submission | None, known: dict | None, directory: Path) -> tuple[str, str]:
     """The student id for a file, and a note if the file's own id had to be passed over."""
     given = submission.student if submission is not None else ""
     if given and SAFE_ID.fullmatch(given):
         return given, ""
-    from_name = _id_from_name(path.stem, known)
+    names = [path.parent.name, path.stem] if path.parent != directory else [path.stem]
+    from_name = next((sid for sid in (_id_from_name(n, known) for n in names) if sid), "")
     if given and from_name:
         return from_name, BAD_ID.format(given=given[:80], student=from_name)
     return from_name, ""

@@ -97,8 +97,9 @@ class _Loader(yaml.SafeLoader):
 
 
 def load_yaml(path: Path, text: str) -> Loaded:
-    loader = _Loader(text)
+    loader = None
     try:
+        loader = _Loader(text)  # the reader checks every character here
         node = loader.get_single_node()
     except _Refused as exc:
         raise SubmissionError(path, str(exc), exc.line) from None
@@ -107,7 +108,8 @@ def load_yaml(path: Path, text: str) -> Loaded:
     except RecursionError:
         raise SubmissionError(path, "nested too deeply") from None
     finally:
-        loader.dispose()
+        if loader is not None:
+            loader.dispose()
     if node is None:
         raise SubmissionError(path, "the file is empty")
     loaded = Loaded(None)

@@ -6,18 +6,20 @@ graded against their own numbers; the code in the answer file is only checked, n
 from __future__ import annotations
 
 import dataclasses
+import inspect
 from pathlib import Path
 from typing import Callable, Iterable, Mapping
 
-from exgen.assignment import Assignment, Sheet, Student, build_sheet, load_roster
+from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet, load_roster
 from exgen.bank import Bank
 from exgen.errors import ExgenError
+from exgen.variant import Variant
 
 from .answers import Submission
 from .collect import Entry, collect
 from .marking import QuestionMarker
 from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, UNREADABLE_FILE, BatchResult, Column, FileProblem,
-                      SheetResult)
+                      QuestionResult, SheetResult)
 
 CODE_MISMATCH = ("This answer file carries the sheet code {given}, but your sheet's code is {code}: it may "
                  "belong to another sheet. It was graded against your own sheet.")
@@ -66,7 +68,7 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
                     for i, spec in enumerate(assignment.questions, start=1))
     max_points = sum(c.max_points for c in columns)
     entries, problems = collect(Path(submissions_dir), roster)
-    loop = progress(entries, len(entries)) if progress else entries
+    loop = _with_progress(progress, entries)
     sheets = []
     for entry in loop:
         sheet_result = _grade_entry(entry, assignment, bank, secret, max_points)
@@ -74,7 +76,25 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
             problems.append(FileProblem(entry.path or Path(submissions_dir), sheet_result.warnings[-1],
                                         entry.student.id))
         sheets.append(sheet_result)
-    return BatchResult(assignment, columns, tuple(sheets), tuple(problems))
+    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir))
+
+
+def grade_variant(variant: Variant, answers: Mapping[str, str]) -> QuestionResult:
+    """One variant graded on its own (part id -> text), at the template's own points."""
+    question = Question(1, "q1", variant, variant.template.points)
+    parts = {_norm(p.id): p.id for p in variant.template.parts}
+    return QuestionMarker(question).mark({parts[_norm(k)]: v for k, v in answers.items() if _norm(k) in parts})
+
+
+def _with_progress(progress: Progress | None, entries: list) -> Iterable:
+    """`progress(iterable, total)`; a wrapper that also wants a label gets "grading"."""
+    if progress is None:
+        return entries
+    try:
+        wanted = len(inspect.signature(progress).parameters)
+    except (TypeError, ValueError):
+        wanted = 2
+    return progress(entries, len(entries), "grading") if wanted >= 3 else progress(entries, len(entries))
 
 
 def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float) -> SheetResult:

@@ -32,6 +32,7 @@ NOT_EXACT = "not the expected whole number"
 NOT_A_WHOLE_NUMBER = "a whole number is asked"
 WRONG_CHOICE = "not the right choice"
 WRONG_KIND = "wrong_kind"
+ZERO_FRACTION = 1e-9  # below this fraction of the key, a value counts as zero
 
 
 class QuestionMarker:
@@ -90,7 +91,7 @@ class QuestionMarker:
     def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | None:
         """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong."""
         wrong = [u for u in part.uses if u in self.readings and u not in self.right]
-        if not wrong:
+        if not wrong or any(_degenerate(self.readings[u].value, self.variant.answers[u].value) for u in wrong):
             return None
         template = self.variant.template
         overrides = {}
@@ -106,9 +107,13 @@ class QuestionMarker:
         if derivation is None:
             return None
         try:
-            return answer_for(part, derivation), mistakes_for(part, derivation), wrong
+            carried = answer_for(part, derivation)
+            found = mistakes_for(part, derivation)
         except (ExgenError, ValueError, ArithmeticError, KeyError):
             return None
+        if _degenerate(carried.value, self.variant.answers[part.id].value):
+            return None
+        return carried, found, wrong
 
     def _rerun(self, overrides: dict[str, float]) -> Derivation | None:
         key = tuple(sorted(overrides.items()))
@@ -131,6 +136,14 @@ class _Result:
         points = self.max_points if status in (CORRECT, CARRIED) else 0.0
         return PartResult(self.part.id, self.ask, self.part.unit, self.text, self.answer.text, status,
                           points, self.max_points, message, mistake)
+
+
+def _degenerate(value, key) -> bool:
+    """A zero where the key is not: an answer of 0 for a speed makes every later power 0, and a
+    trivial 0 carried forward earns nothing."""
+    if not isinstance(value, (int, float)) or not isinstance(key, (int, float)):
+        return False
+    return key != 0 and abs(value) <= ZERO_FRACTION * abs(key)
 
 
 def _safe(matches, given, expected) -> bool:

@@ -42,12 +42,18 @@ MESSAGES: dict[str, str] = {
     # speeds
     "rpm_as_rad_s": "The speed in rpm was used as if it were in rad/s: convert first, ω = 2πN/60.",
     "diameter_for_radius": "The diameter was used where the radius belongs (v = ωr; torque = force × radius).",
-    "ratio_inverted": "The velocity ratio is upside down: N₂/N₁ = d₁/d₂, so the smaller pulley turns faster.",
+    "ratio_inverted": "A ratio is upside down. For pulleys N₂/N₁ = d₁/d₂ (the smaller pulley turns faster); "
+                      "for a change, divide by the original value.",
     "slip_not_applied": "Slip was left out: it lowers the driven speed by the factor (1 − G/100).",
     "slip_one_pulley": "Slip happens on both pulleys: the total slip is G = G₁ + G₂, used once in (1 − G/100).",
+    "slip_once": "Each drive in the train slips: apply (1 − G/100) once for every belt drive.",
+    "slip_wrong_way": "Slip was applied the wrong way: it makes the driven pulley slower, a factor (1 − G/100), "
+                      "not a division by it or (1 + G/100).",
     "thickness_forgotten": "The belt thickness was left out: the belt's mid-line runs on the diameters d + t.",
     "thickness_added_wrong": "The thickness was added wrongly: each effective diameter is d + t (the belt's "
                              "mid-line), added to both pulleys.",
+    "thickness_not_subtracted": "The ratio gives the effective diameter d + t; subtract t to get the pulley's own "
+                                "diameter.",
     # tensions and power
     "theta_in_degrees": "The angle of contact went into e^(μθ) in degrees; the formula needs θ in radians.",
     "flat_formula_on_v_belt": "That is the flat-belt result. In a V-groove the wedge raises the friction: "
@@ -59,6 +65,12 @@ MESSAGES: dict[str, str] = {
                          "(T₁ − T_c)/(T₂ − T_c) = e^(μθ).",
     "creep_ignored": "Creep was left out: an elastic belt's driven side runs slower, v₂ = v₁(1 − (T₁ − T₂)/(AE)).",
     "creep_added": "Creep was added instead of subtracted: it makes the driven side slower, not faster.",
+    "tc_equals_tmax": "At maximum power the centrifugal tension is a third of the maximum tension, not all of it: "
+                      "T_c = T_max/3, so v = √(T_max/(3m)).",
+    "tc_half": "At maximum power T_c = T_max/3, not T_max/2.",
+    # counts and choices
+    "rounded_down": "A count of whole things was rounded down; too few cannot carry the load: round up.",
+    "opposite": "That is the opposite of what happens; think through which way the change moves the result.",
 }
 
 #: When a solver records a mistake this registry does not know yet.

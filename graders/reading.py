@@ -70,7 +70,7 @@ def read_answer(text: str, part: PartSpec) -> Given:
         value = reading.value
     else:
         try:
-            value = units.convert(reading.value, reading.unit, part.unit)
+            value = _convert(reading.value, reading.unit, part.unit)
         except (DimensionError, QuantityError):
             raise
         except Exception as exc:  # a unit pint parsed but cannot convert
@@ -80,16 +80,24 @@ def read_answer(text: str, part: PartSpec) -> Given:
     return Given(text, value, reading.value, reading.unit)
 
 
-def kind_of(unit: str) -> str:
-    """A word for what a unit measures ("force", "length"), whatever order pint lists dimensions in."""
+def _convert(value: float, from_unit: str, to_unit: str) -> float:
+    """units.convert, also when pint spells one dimension in two orders: it writes lbf, kgf and hp as
+    '[length] * [mass] ...' but N and W as '[mass] * [length] ...', which units.convert calls different."""
     try:
-        info = units.unit_info(unit)
+        return units.convert(value, from_unit, to_unit)
+    except DimensionError:
+        src, dst = units.unit_info(from_unit), units.unit_info(to_unit)
+        if src.angle == dst.angle and _canonical_dims(src.dims) == _canonical_dims(dst.dims):
+            return value * src.factor / dst.factor
+        raise
+
+
+def kind_of(unit: str) -> str:
+    """A word for what a unit measures ("force", "length")."""
+    try:
+        return units.unit_info(unit).kind
     except QuantityError:
         return "unknown unit"
-    kind = info.kind
-    if kind.startswith("quantity of dimension"):
-        kind = units.describe(_canonical_dims(info.dims), info.angle)
-    return kind
 
 
 def _canonical_dims(dims: str) -> str:

@@ -18,6 +18,7 @@ MARK = {True: "\u2713", False: "\u2717"}
 SHOWN_ANSWER_LENGTH = 60
 COMMON_MISTAKES = 3
 _CONTROL = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
+_LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
 
 
@@ -84,18 +85,25 @@ def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
 def _part_block(part: PartResult) -> list[str]:
     given = f"`{_shown(part.given)}`" if part.given.strip() else "(blank)"
     return [
-        f"**({part.part}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask)}  ",
+        f"**({part.part_id}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask)}  ",
         f"Your answer: {given} · expected: {part.expected}  ",
         _escape(_sentence(part.message)), "",
     ]
 
 
-def _shown(text: str) -> str:
-    """A student's answer, safe inside a Markdown code span: one line, short, no backticks."""
-    text = " ".join(_CONTROL.sub(" ", text).split()).replace("`", "'")
-    if len(text) > SHOWN_ANSWER_LENGTH:
-        text = text[: SHOWN_ANSWER_LENGTH - 1] + "\u2026"
+def _shown(text: str, limit: int = SHOWN_ANSWER_LENGTH) -> str:
+    """A student's text, safe inside a Markdown code span and as HTML: one line, short, no backticks or tags."""
+    text = " ".join(_CONTROL.sub(" ", text).split()).translate(_LOOK_ALIKES)
+    if len(text) > limit:
+        text = text[: limit - 1] + "\u2026"
     return text or " "
+
+
+def _where(path: Path, base: Path | None) -> str:
+    try:
+        return str(path.relative_to(base)) if base else str(path)
+    except ValueError:
+        return str(path)
 
 
 def _escape(text: str) -> str:
@@ -125,8 +133,8 @@ def report_page(batch: BatchResult) -> str:
     if warned:
         lines += ["", "## Sheet code warnings", ""] + [f"- {s.student.id}" for s in warned]
     lines += ["", "## Problem files", ""]
-    lines += [f"- `{_shown(str(p.path))}`{' (' + p.student + ')' if p.student else ''}: {_escape(p.reason)}"
-              for p in batch.problems] or ["None."]
+    lines += [f"- `{_shown(_where(p.path, batch.submissions), 200)}`{' (' + p.student + ')' if p.student else ''}: "
+              f"{_escape(p.reason)}" for p in batch.problems] or ["None."]
     return "\n".join(lines) + "\n"
 
 
@@ -139,7 +147,7 @@ def _item_rows(batch: BatchResult) -> list[str]:
             continue
         for question in sheet.questions:
             for part in question.parts:
-                key = (question.number, question.slot, part.part)
+                key = (question.number, question.slot, part.part_id)
                 tally.setdefault(key, Counter())[part.status] += 1
                 if part.mistake:
                     mistakes.setdefault(key, Counter())[part.mistake] += 1

@@ -24,7 +24,7 @@ NOT_GRADED = "not graded"  # the sheet itself could not be rebuilt (a bank or se
 
 @dataclass(frozen=True)
 class PartResult:
-    part: str
+    part_id: str
     ask: str
     unit: str
     given: str
@@ -102,10 +102,19 @@ class BatchResult:
     columns: tuple[Column, ...]
     sheets: tuple[SheetResult, ...]
     problems: tuple[FileProblem, ...] = field(default=())
+    submissions: Path | None = None  # the directory the answer files came from
 
     @property
     def max_points(self) -> float:
         return sum(c.max_points for c in self.columns)
+
+    def summary(self) -> str:
+        """One line for the terminal: how many sheets, by status, and the mean mark."""
+        counts = ", ".join(f"{n} {status}" for status, n in sorted(self.by_status().items())) or "no students"
+        marks = self.percent_summary()
+        mean = f"; mean {marks[0]:.1f} %, median {marks[1]:.1f} %" if marks else ""
+        problems = f"; {len(self.problems)} problem file(s)" if self.problems else ""
+        return f"{len(self.sheets)} student(s): {counts}{mean}{problems}"
 
     def by_status(self) -> dict[str, int]:
         counts: dict[str, int] = {}

@@ -1,0 +1,91 @@
+"""The comparators: each method against a table of near and far values."""
+import math
+
+import pytest
+
+from exgen.template import PartSpec, Tolerance
+from graders import checks
+
+
+@pytest.mark.parametrize("given, expected, kwargs, ok", [
+    (100.0, 100.0, {}, True),
+    (100.9, 100.0, {}, True),
+    (99.1, 100.0, {}, True),
+    (101.1, 100.0, {}, False),
+    (-100.5, -100.0, {}, True),
+    (100.0, -100.0, {}, False),
+    (0.0, 0.0, {}, True),
+    (1e-9, 0.0, {}, False),
+    (1e-9, 0.0, {"abs_tol": 1e-6}, True),
+    (104.0, 100.0, {"rel": 0.05}, True),
+    (math.nan, 100.0, {}, False),
+    (math.inf, 100.0, {}, False),
+    (100.0, math.nan, {}, False),
+    # significant figures: within half a unit in the last figure asked for
+    (168.8, 168.84, {"sig": 4}, True),
+    (168.9, 168.86, {"sig": 4}, True),
+    (168.9, 168.84, {"sig": 4}, False),
+    (169.0, 168.84, {"sig": 4}, False),
+    (170.0, 168.84, {"sig": 2}, True),
+    (0.00124, 0.001236, {"sig": 3}, True),
+])
+def test_numeric(given, expected, kwargs, ok):
+    assert checks.numeric(given, expected, **kwargs) is ok
+
+
+@pytest.mark.parametrize("given, expected, ok", [
+    (218.0, 218.0, True),
+    (-142.0, 218.0, True),        # the same direction
+    (578.0, 218.0, True),
+    (218.4, 218.0, True),
+    (218.6, 218.0, False),
+    (359.8, 0.1, True),           # across the wrap
+    (0.2, 359.9, True),
+    (180.0, 0.0, False),
+    (math.nan, 0.0, False),
+])
+def test_angle(given, expected, ok):
+    assert checks.angle(given, expected) is ok
+
+
+@pytest.mark.parametrize("given, expected, ok", [
+    (4, 4, True), (4.0, 4, True), (3.0, 4, False), (4.000001, 4, False), (5, 4, False), (math.inf, 4, False),
+])
+def test_integer(given, expected, ok):
+    assert checks.integer(given, expected) is ok
+
+
+@pytest.mark.parametrize("given, expected, aliases, ok", [
+    ("increase", "increase", None, True),
+    ("  Increase ", "increase", None, True),
+    ("INCREASE", "increase", None, True),
+    ("crossed-belt", "crossed belt", None, True),
+    ("crossed_belt", "Crossed Belt", None, True),
+    ("decrease", "increase", None, False),
+    ("ccw", "anticlockwise", {"ccw": "anticlockwise"}, True),
+    ("CCW", "anticlockwise", {"ccw": "anticlockwise"}, True),
+    ("cw", "anticlockwise", {"ccw": "anticlockwise"}, False),
+])
+def test_choice(given, expected, aliases, ok):
+    assert checks.choice(given, expected, aliases) is ok
+
+
+@pytest.mark.parametrize("spec, given, expected, ok", [
+    (PartSpec("a", "x", "v", "m/s"), 5.04, 5.0, True),
+    (PartSpec("a", "x", "v", "m/s"), 5.06, 5.0, False),
+    (PartSpec("a", "x", "v", "m/s", tol=Tolerance(rel=0.0, abs=0.1)), 5.09, 5.0, True),
+    (PartSpec("a", "x", "th", "deg", type="angle", tol=Tolerance(rel=0.0, abs=0.5)), -142.2, 218.0, True),
+    # an angle asked in rad: the absolute tolerance is still in degrees
+    (PartSpec("a", "x", "th", "rad", type="angle", tol=Tolerance(rel=0.0, abs=0.5)), -math.pi + 0.005, math.pi, True),
+    (PartSpec("a", "x", "th", "rad", type="angle", tol=Tolerance(rel=0.0, abs=0.5)), 0.1, math.pi, False),
+    (PartSpec("a", "x", "n", "", type="integer", tol=Tolerance(0.0)), 5.0, 5, True),
+    (PartSpec("a", "x", "t", "", type="choice", choices=("up", "down")), "Up", "up", True),
+])
+def test_for_part(spec, given, expected, ok):
+    assert checks.for_part(spec)(given, expected) is ok
+
+
+def test_widened_comparator_accepts_what_the_plain_one_does_not():
+    spec = PartSpec("a", "x", "v", "m/s")
+    assert not checks.for_part(spec)(5.1, 5.0)
+    assert checks.for_part(spec, widen=3)(5.1, 5.0)
