@@ -120,4 +120,5 @@ def with_article(kind: str) -> str:
 def wrong_kind_message(exc: DimensionError, asked_unit: str) -> str:
     """"'m' is a length, but a force is asked (in N)": both kinds named in words."""
     given, asked = kind_of(exc.given_unit), kind_of(asked_unit)
-    return f"'{exc.given_unit}' is {with_article(given)}, but {with_article(asked)} is asked (in {unit_name(asked_unit)})"
+    where = f" (in {unit_name(asked_unit)})" if asked_unit else ""
+    return f"'{exc.given_unit}' is {with_article(given)}, but {with_article(asked)} is asked{where}"
