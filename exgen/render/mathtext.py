@@ -1,0 +1,102 @@
+"""Text with LaTeX math spans ($...$) for each output: Typst markup, Markdown, plain Unicode.
+
+Templates and solvers write math as LaTeX. Typst gets it through `tex2typst` (cached: the
+same symbols and formulas recur on every sheet); the prose around it is escaped so that a
+`#`, `*`, `_`, `@` or `<` in a statement stays a character instead of becoming markup.
+Markdown keeps the math as $...$ for GitHub, Pandoc and MathJax.
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+import tex2typst
+
+from ..errors import ExgenError
+from .unicode_math import latex_to_unicode
+
+# A math span: an unescaped $ ... unescaped $ (a literal dollar is written \$).
+MATH_SPAN = re.compile(r"(?<!\\)\$(.+?)(?<!\\)\$", re.DOTALL)
+
+_TYPST_ALWAYS = set("\\#*_$`<>@[]~")
+_TYPST_LINE_START = re.compile(r"^([ \t]*)([=+\-/]|\d+\.(?=\s|$))", re.MULTILINE)
+_MD_ALWAYS = set("\\`*_[]<>|$")
+_MD_LINE_START = re.compile(r"^([ \t]*)(#|[+\-](?=\s)|\d+\.(?=\s))", re.MULTILINE)
+
+
+class MathError(ExgenError, ValueError):
+    """LaTeX that cannot be converted for an output; names the text."""
+
+    def __init__(self, latex: str, reason: str):
+        self.latex, self.reason = latex, reason
+        super().__init__(f"cannot convert the math {latex!r}: {reason}")
+
+
+@lru_cache(maxsize=8192)
+def latex_to_typst(latex: str) -> str:
+    """LaTeX math (without the dollars) -> Typst math (without the dollars)."""
+    if not latex.strip():
+        return ""
+    try:
+        return tex2typst.tex2typst(latex)
+    except ValueError as exc:
+        raise MathError(latex, str(exc).splitlines()[0]) from None
+
+
+def split_math(text: str) -> list[tuple[bool, str]]:
+    """[(is_math, chunk), ...] in order; prose chunks keep their \\$ escapes."""
+    out, at = [], 0
+    for match in MATH_SPAN.finditer(text):
+        if match.start() > at:
+            out.append((False, text[at:match.start()]))
+        out.append((True, match.group(1).strip()))
+        at = match.end()
+    if at < len(text):
+        out.append((False, text[at:]))
+    return out
+
+
+def _unescape_dollars(prose: str) -> str:
+    return prose.replace("\\$", "$")
+
+
+def escape_typst(prose: str) -> str:
+    """Plain text -> Typst markup that shows exactly that text."""
+    text = "".join("\\" + ch if ch in _TYPST_ALWAYS else ch for ch in prose)
+    text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
+    return _TYPST_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
+
+
+def escape_markdown(prose: str) -> str:
+    """Plain text -> Markdown that shows exactly that text (no emphasis, links, lists or math)."""
+    text = "".join("\\" + ch if ch in _MD_ALWAYS else ch for ch in prose)
+    return _MD_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
+
+
+def _escape_marker(marker: str) -> str:
+    """A list or heading marker at the start of a line, made literal ("1." -> "1\\.", "-" -> "\\-")."""
+    return marker[:-1] + "\\." if marker.endswith(".") else "\\" + marker
+
+
+def text_to_typst(text: str) -> str:
+    """A statement or ask with $LaTeX$ spans -> Typst markup with $Typst math$."""
+    return "".join(f"${latex_to_typst(chunk)}$" if is_math else escape_typst(_unescape_dollars(chunk))
+                   for is_math, chunk in split_math(text))
+
+
+def text_to_markdown(text: str) -> str:
+    """A statement or ask with $LaTeX$ spans -> Markdown, the math kept as $LaTeX$."""
+    return "".join(f"${chunk}$" if is_math else escape_markdown(_unescape_dollars(chunk))
+                   for is_math, chunk in split_math(text))
+
+
+def text_to_plain(text: str) -> str:
+    """A statement or ask for the terminal: math spans as Unicode."""
+    return "".join(latex_to_unicode(chunk) if is_math else _unescape_dollars(chunk)
+                   for is_math, chunk in split_math(text))
+
+
+def typst_string(text: str) -> str:
+    """A Typst string literal holding `text` exactly (used to embed SVG figures in the source)."""
+    escaped = text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n").replace("\r", "\\r")
+    return '"' + escaped.replace("\t", "\\t") + '"'

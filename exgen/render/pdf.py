@@ -1,0 +1,62 @@
+"""PDF sheets and keys: Typst source from layouts, compiled in-process (no TeX, no temp files).
+
+Figures are embedded in the source as SVG text. The output depends only on the sheet: no
+date is written, and only the fonts that ship inside Typst are used, so the same sheet
+gives the same bytes on any machine.
+"""
+from __future__ import annotations
+
+import typst
+
+from ..errors import ExgenError
+from ..figures import figure_svg
+from .context import sheet_context
+from .jinja import render
+from .targets import TYPST
+
+
+class PdfError(ExgenError, RuntimeError):
+    """Typst could not compile a sheet; names the sheet and Typst's message."""
+
+    def __init__(self, what: str, message: str):
+        self.what, self.message = what, message
+        super().__init__(f"cannot typeset {what}: {message}")
+
+
+def _context(sheet, key: bool) -> dict:
+    svgs = {q.slot: svg for q in sheet.questions if (svg := figure_svg(q.variant))}
+    context = sheet_context(sheet, TYPST, svgs, svgs, key=key)
+    a, s = sheet.assignment, sheet.student
+    kind = "Instructor key" if key else "Tutorial sheet"
+    context["doc_title"] = f"{kind}: {a.title} ({s.id})"
+    context["doc_author"] = a.course or a.title
+    pieces = [TYPST.prose(a.course), TYPST.prose(a.title), f"Sheet {TYPST.prose(sheet.code)}"]
+    if key:
+        pieces.insert(0, "*Instructor key*")
+    context["footer_left"] = " · ".join(p for p in pieces if p)
+    return context
+
+
+def sheet_typst(sheet) -> str:
+    """The Typst source of the student's sheet."""
+    return render("sheet.typ.j2", _context(sheet, key=False))
+
+
+def key_typst(sheet) -> str:
+    """The Typst source of the instructor's key."""
+    return render("key.typ.j2", _context(sheet, key=True))
+
+
+def compile_pdf(source: str, what: str = "a document") -> bytes:
+    try:
+        return typst.compile(source.encode("utf-8"), format="pdf", ignore_system_fonts=True)
+    except typst.TypstError as exc:
+        raise PdfError(what, str(exc).strip().splitlines()[0] if str(exc).strip() else repr(exc)) from exc
+
+
+def sheet_pdf(sheet) -> bytes:
+    return compile_pdf(sheet_typst(sheet), f"the sheet of {sheet.student.id}")
+
+
+def key_pdf(sheet) -> bytes:
+    return compile_pdf(key_typst(sheet), f"the key of {sheet.student.id}")
