@@ -153,3 +153,25 @@ def test_a_path_in_the_student_field_cannot_escape_the_feedback_folder(bank, tmp
     assert "not a valid id" in batch.sheets[0].warnings[0]
     write_results(batch, tmp_path / "out")
     assert not (tmp_path / "evil.md").exists()
+
+
+@pytest.mark.parametrize("name, payload", [
+    ("s001.yaml", b"a: &a [x, x, x]\nb: &b [*a, *a, *a]\nc: [*b, *b, *b]\n"),
+    ("s001.yaml", b"answers: !!python/object/apply:os.system ['echo pwned']\n"),
+    ("s001.yaml", b"answers:\n  q1:\n    a: \"" + b"9" * (10 * 1024 * 1024) + b"\"\n"),
+    ("s001.json", bytes(range(256)) * 64),
+    ("s001.yaml", b"- just\n- a list\n"),
+    ("s001.json", b"[" * 100_000 + b"]" * 100_000),
+    ("s001.csv", b"q1,a," + b"9" * 200_000 + b"\n"),
+    ("s001.yaml", b"answers:\n  q1:\n    a: \xff\xfe 5 N\n"),
+])
+def test_one_hostile_file_never_stops_the_batch(bank, tmp_path, name, payload):
+    folder = tmp_path / "in"
+    folder.mkdir()
+    (folder / name).write_bytes(payload)
+    _, data = key_form(bank, ROSTER[0])
+    (folder / "s000.json").write_text(json.dumps(data), encoding="utf-8")
+    batch = grade_batch(ASSIGNMENT, bank, SECRET, folder, roster=ROSTER[:2])
+    assert [(s.student.id, s.status) for s in batch.sheets] == [("s000", GRADED), ("s001", UNREADABLE_FILE)]
+    assert batch.sheets[0].percent == pytest.approx(100)
+    assert [p.path.name for p in batch.problems] == [name] and batch.problems[0].reason
