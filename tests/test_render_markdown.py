@@ -1,0 +1,101 @@
+"""Markdown sheets and keys: what a student sees, and what only the instructor sees."""
+import re
+
+import pytest
+
+from exgen import units
+from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.render.markdown import key_markdown, sheet_markdown
+from exgen.render.mathtext import text_to_markdown
+
+SECRET = b"x" * 32
+
+
+@pytest.fixture(scope="module")
+def sheet(bank):
+    specs = tuple(QuestionSpec(f"q{i}", t.id, 10.0 if i == 2 else None) for i, t in enumerate(bank, start=1))
+    assignment = Assignment(id="tut1", title="Tutorial 1: Belts", questions=specs, course="BMCM 2723",
+                            due="2026-12-01", instructions="Use $g = 9.81$ m/s² and *four* figures.")
+    return build_sheet(assignment, Student("A123", "Nur Aina"), bank, SECRET)
+
+
+@pytest.fixture(scope="module")
+def figures(sheet):
+    return {q.slot: f"{q.slot}.svg" for q in sheet.questions if q.variant.template.figure}
+
+
+@pytest.fixture(scope="module")
+def student_md(sheet, figures):
+    return sheet_markdown(sheet, figures)
+
+
+@pytest.fixture(scope="module")
+def key_md(sheet, figures):
+    return key_markdown(sheet, figures)
+
+
+def _numbers(text):
+    return set(re.findall(r"\d+(?:\.\d+)?", text))
+
+
+def test_header(sheet, student_md):
+    for expected in ("Nur Aina", "A123", sheet.code, "2026-12-01", "BMCM 2723", "Tutorial 1: Belts",
+                     "Use $g = 9.81$ m/s² and \\*four\\* figures."):
+        assert expected in student_md
+    assert f"{sheet.points:g} marks" in student_md
+
+
+def test_every_statement_ask_and_figure(sheet, figures, student_md):
+    for q in sheet.questions:
+        v = q.variant
+        assert f"## Question {q.number} (" in student_md
+        assert text_to_markdown(v.statement) in student_md
+        for p in v.params:
+            if f"{{{{ {p.name} }}}}" in v.template.statement:
+                assert str(p) in student_md
+        for part in v.template.parts:
+            assert f"**({part.id})** {text_to_markdown(v.asks[part.id])}" in student_md
+        if q.slot in figures:
+            assert f"]({figures[q.slot]})" in student_md
+
+
+def test_marks_follow_the_question_scale(sheet, student_md):
+    scaled = sheet.questions[1]
+    assert f"## Question 2 (10 marks)" in student_md
+    first = scaled.variant.template.parts[0]
+    assert f"({units.format_number(first.points * scaled.scale, 3).rstrip('0').rstrip('.')} mark" in student_md
+
+
+def test_no_answer_on_the_sheet(sheet, student_md):
+    assert "INSTRUCTOR" not in student_md and "Worked solution" not in student_md
+    printed = _numbers(student_md.split("## Question")[0])
+    for q in sheet.questions:
+        printed |= _numbers(q.variant.statement) | set().union(*(_numbers(a) for a in q.variant.asks.values()))
+    for q in sheet.questions:
+        for answer in q.variant.answers.values():
+            if isinstance(answer.value, float):  # a whole number or a word can occur in prose by chance
+                assert answer.text not in student_md
+                number = units.format_number(answer.value, 4)
+                assert number in printed or number not in _numbers(student_md), (q.slot, answer.part.id)
+
+
+def test_key_holds_answers_given_data_and_working(sheet, key_md):
+    assert key_md.startswith("# INSTRUCTOR KEY")
+    for q in sheet.questions:
+        assert q.variant.template.id.replace("_", "\\_") in key_md
+        for answer in q.variant.answers.values():
+            assert f"**{answer.text}**" in key_md
+        for p in q.variant.params:
+            assert f"| ${p.symbol}$ | {p}" in key_md
+    assert key_md.count("### Worked solution") == len(sheet.questions)
+
+
+def test_student_text_is_escaped(bank):
+    assignment = Assignment(id="t", title="A *title* with _marks_", questions=(QuestionSpec("q1", "belts.drive_geometry"),))
+    sheet = build_sheet(assignment, Student("s1", "[Robert] <Bobby> | Tables"), bank, SECRET)
+    md = sheet_markdown(sheet, {})
+    assert r"A \*title\* with \_marks\_" in md and r"\[Robert\] \<Bobby\> \| Tables" in md
+
+
+def test_same_sheet_same_markdown(sheet, figures, student_md):
+    assert sheet_markdown(sheet, figures) == student_md

@@ -1,0 +1,144 @@
+"""Math and prose for each output: LaTeX -> Typst, escaping, LaTeX -> Unicode."""
+import json
+
+import pytest
+import typst
+
+from exgen.render.mathtext import (MathError, escape_markdown, escape_typst, latex_to_typst, split_math,
+                                   text_to_markdown, text_to_plain, text_to_typst, typst_string)
+from exgen.render.unicode_math import latex_to_unicode
+
+
+@pytest.mark.parametrize("latex, expected", [
+    (r"\operatorname{cosec}\theta", 'op("cosec") theta'),
+    (r"\sin^{-1}\frac{r_2 - r_1}{X}", "sin^(-1) (r_2 - r_1)/X"),
+    (r"\frac{T_1}{T_2}", "(T_1)/(T_2)"),
+    (r"\frac{800}{2}", "800/2"),
+    (r"T_{\mathrm{max}}", "T_upright(m a x)"),
+    (r"v_{\mathrm{opt}}", "v_upright(o p t)"),
+    (r"\omega_1", "omega_1"),
+    (r"e^{\mu\,\theta}", "e^(mu thin theta)"),
+    (r"\pi - 2\,\alpha", "pi - 2 thin alpha"),
+    (r"0.25 \times 3.106", "0.25 times 3.106"),
+    (r"\sqrt{\frac{T}{3\,m}}", "sqrt(T/(3 thin m))"),
+    (r"\left\lceil \frac{P}{P_b} \right\rceil", "ceil(P/(P_b))"),
+    (r"\Delta P / P", r"Delta P \/ P"),
+    (r"d_{2,\max}", "d_(2, max)"),
+    (r"\text{rpm}", '"rpm"'),
+    (r"\alpha\beta\Omega", "alpha beta Omega"),
+    ("", ""),
+])
+def test_latex_to_typst(latex, expected):
+    assert latex_to_typst(latex) == expected
+
+
+def test_bad_latex_names_the_math():
+    with pytest.raises(MathError, match=r"\\frac\{a"):
+        latex_to_typst(r"\frac{a")
+
+
+@pytest.mark.parametrize("text, chunks", [
+    ("no math", [(False, "no math")]),
+    ("a $x_1$ b", [(False, "a "), (True, "x_1"), (False, " b")]),
+    ("$a$$b$", [(True, "a"), (True, "b")]),
+    (r"costs \$5 and $ y $", [(False, r"costs \$5 and "), (True, "y")]),
+    ("one $ dollar", [(False, "one $ dollar")]),
+])
+def test_split_math(text, chunks):
+    assert split_math(text) == chunks
+
+
+@pytest.mark.parametrize("prose, escaped", [
+    ("plain words, 3.5 m", "plain words, 3.5 m"),
+    ("#set page", r"\#set page"),
+    ("*bold* and _it_", r"\*bold\* and \_it\_"),
+    ("a <label> @ref", r"a \<label\> \@ref"),
+    ("[x] ~ `code`", r"\[x\] \~ \`code\`"),
+    ("back\\slash", "back\\\\slash"),
+    ("http://x // y /* z", r"http:/\/x /\/ y /\* z"),
+    ("= heading", r"\= heading"),
+    ("- item", r"\- item"),
+    ("+ item", r"\+ item"),
+    ("2. step", r"2\. step"),
+    ("line\n- item", "line\n\\- item"),
+    ("x-? y", r"x-\? y"),
+    ("mm² N·m θ", "mm² N·m θ"),
+])
+def test_escape_typst(prose, escaped):
+    assert escape_typst(prose) == escaped
+
+
+def _flatten(node) -> str:
+    """The characters a queried Typst content value shows."""
+    if isinstance(node, list):
+        return "".join(_flatten(n) for n in node)
+    func = node.get("func")
+    if func in ("text", "symbol"):
+        return node["text"]
+    if func == "space":
+        return " "
+    if func == "sequence":
+        return _flatten(node["children"])
+    raise AssertionError(f"unexpected markup in escaped text: {node}")
+
+
+@pytest.mark.parametrize("prose", [
+    "#let x = 1", "*not bold*", "_not italic_", "$not math$", "<not-a-label>", "@not-a-ref", "[not content]",
+    "~ nbsp", "` raw`", r"back\slash", "// not a comment", "/* not a comment */", "= not a heading",
+    "- not a list", "+ not an enum", "3. not numbered", "a -? b", "T_max = 2 kN",
+])
+def test_escaped_prose_typesets_as_itself(prose):
+    source = f"#metadata[{escape_typst(prose)}] <m>".encode()
+    value = json.loads(typst.query(source, "<m>", field="value", one=True))
+    assert _flatten(value) == prose
+
+
+@pytest.mark.parametrize("prose, escaped", [
+    ("plain 3.5 m", "plain 3.5 m"),
+    ("*a* _b_ `c`", r"\*a\* \_b\_ \`c\`"),
+    ("[link](x) <tag> a|b", r"\[link\](x) \<tag\> a\|b"),
+    ("costs $5", r"costs \$5"),
+    ("# not a heading", r"\# not a heading"),
+    ("- not a list", r"\- not a list"),
+    ("1. not a list", r"1\. not a list"),
+    ("a - b, a # b", "a - b, a # b"),
+])
+def test_escape_markdown(prose, escaped):
+    assert escape_markdown(prose) == escaped
+
+
+@pytest.mark.parametrize("text, typst_out, markdown_out, plain_out", [
+    ("Use $g = 9.81$ m/s².", "Use $g = 9.81$ m/s².", "Use $g = 9.81$ m/s².", "Use g = 9.81 m/s²."),
+    (r"Find $\theta_1$ for T_max", r"Find $theta_1$ for T\_max", r"Find $\theta_1$ for T\_max", "Find θ₁ for T_max"),
+    (r"price \$5", r"price \$5", r"price \$5", "price $5"),
+    (r"$\operatorname{cosec}\alpha$", '$op("cosec") alpha$', r"$\operatorname{cosec}\alpha$", "cosec α"),
+])
+def test_text_with_math_for_each_output(text, typst_out, markdown_out, plain_out):
+    assert text_to_typst(text) == typst_out
+    assert text_to_markdown(text) == markdown_out
+    assert text_to_plain(text) == plain_out
+
+
+@pytest.mark.parametrize("latex, expected", [
+    (r"T_{\mathrm{max}}", "Tₘₐₓ"),
+    (r"\operatorname{cosec}\theta", "cosec θ"),
+    (r"\sin^{-1}\frac{r_2 - r_1}{X}", "sin⁻¹((r₂ − r₁)/X)"),
+    (r"\frac{T_1}{T_2}", "T₁/T₂"),
+    (r"e^{\mu\,\theta}", "e^(μθ)"),
+    (r"\pi - 2\,\alpha", "π − 2α"),
+    (r"\left\lceil \frac{P}{P_b} \right\rceil", "⌈P/P_b⌉"),
+    (r"\sqrt{x}", "√x"),
+    (r"-3.2 \times 10^{8}", "−3.2 × 10⁸"),
+    (r"x^2 + y_{12}", "x² + y₁₂"),
+    (r"\Delta P / P", "ΔP/P"),
+    (r"\text{power}", "power"),
+    (r"\unknowncommand", "unknowncommand"),
+])
+def test_latex_to_unicode(latex, expected):
+    assert latex_to_unicode(latex) == expected
+
+
+@pytest.mark.parametrize("text", ['<svg a="1">\n\\x</svg>', "tab\there", 'quote " and \\'])
+def test_typst_string_round_trips(text):
+    source = f"#metadata({typst_string(text)}) <m>".encode()
+    assert json.loads(typst.query(source, "<m>", field="value", one=True)) == text
