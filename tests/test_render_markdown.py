@@ -7,6 +7,7 @@ from exgen import units
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.markdown import key_markdown, sheet_markdown
 from exgen.render.mathtext import text_to_markdown
+from exgen.variant import make_variant
 
 SECRET = b"x" * 32
 
@@ -99,3 +100,15 @@ def test_student_text_is_escaped(bank):
 
 def test_same_sheet_same_markdown(sheet, figures, student_md):
     assert sheet_markdown(sheet, figures) == student_md
+
+
+def test_key_of_a_hand_built_variant(bank):
+    from exgen.assignment import Question, Sheet
+    from exgen.variant import build_variant
+
+    template = bank.get("belts.drive_geometry")
+    values = {p.name: p.exact for p in make_variant(template, 2).params}
+    variant = build_variant(template, values)
+    sheet = Sheet(Assignment(id="t", title="T", questions=()), Student("s1"), "CODE", (Question(1, "q1", variant, 4.0),))
+    key = key_markdown(sheet, {})
+    assert "seed None" not in key and "belts.drive\\_geometry" in key
