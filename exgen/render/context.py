@@ -111,10 +111,10 @@ def key_context(variant, target) -> dict:
         "template_title": target.prose(template.title),
         "source": target.prose(template.source),
         "seed": variant.seed,
-        "given": [{"symbol": target.math(g.symbol), "label": target.prose(g.label),
+        "given": [{"symbol": target.math(g.symbol), "label": target.text(g.label),
                    "printed": target.prose(g.printed), "si": target.prose(g.si_text or "")}
                   for g in worked.given],
         "lines": [{"symbol": target.math(line.symbol), "chain": line.chain(target)[1:],
-                   "note": target.prose(line.note), "parts": ", ".join(f"({p})" for p in line.parts)}
+                   "note": target.text(line.note), "parts": ", ".join(f"({p})" for p in line.parts)}
                   for line in worked.lines],
     }

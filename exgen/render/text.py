@@ -32,14 +32,14 @@ def variant_text(variant, key: bool = False) -> str:
     out += ["", "Given"]
     for g in worked.given:
         si = f" = {g.si_text}" if g.si_text else ""
-        label = f"  ({g.label})" if g.label else ""
+        label = f"  ({PLAIN.text(g.label)})" if g.label else ""
         out.append(f"  {PLAIN.math(g.symbol)} = {g.printed}{si}{label}")
     out += ["", "Worked solution"]
     for line in worked.lines:
         marker = "  " + " ".join(f"({p})" for p in line.parts) if line.parts else ""
         out.append("  " + " = ".join(line.chain(PLAIN)) + marker)
         if line.note:
-            out.append(f"      {line.note}")
+            out.append(f"      {PLAIN.text(line.note)}")
     out += ["", "Answers"]
     for part in template.parts:
         out.append(f"  ({part.id}) {variant.answers[part.id].text}")
