@@ -88,6 +88,11 @@ class Derivation:
                 raise InvalidDraw(reason)
             self.warnings.append(reason)
 
+    def require_apart(self, value: float, other: float, rel: float, what: str) -> None:
+        """Reject data for which a known wrong method lands within `rel` of the right value:
+        a sheet should ask only for effects a student's answer can show."""
+        self.require(abs(value - other) >= rel * abs(value), f"{what} changes the answer by less than {rel:.1%}")
+
     def __getitem__(self, name: str) -> Step:
         return self._by_name[name]
 

@@ -64,8 +64,12 @@ class DimensionError(ExgenError, ValueError):
     def __init__(self, given_unit: str, given_dim: str, asked_unit: str, asked_dim: str):
         self.given_unit, self.given_dim, self.asked_unit, self.asked_dim = given_unit, given_dim, asked_unit, asked_dim
         super().__init__(
-            f"'{given_unit}' is a {given_dim}, but a {asked_dim} is asked (in {asked_unit})"
+            f"'{given_unit}' is {_article(given_dim)} {given_dim}, but {_article(asked_dim)} {asked_dim} is asked (in {asked_unit})"
         )
+
+
+def _article(word: str) -> str:
+    return "an" if word[:1] in "aeiou" else "a"
 
 
 class AssignmentError(ExgenError, ValueError):

@@ -28,7 +28,10 @@ _NUMBER = r"[+-]?(?:\d{1,3}(?: \d{3})+(?:\.\d*)?|\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]
 _TIMES_TEN = r"(?:\s*(?:x|\*|\\times)\s*10\s*(?:\^|\*\*)\s*\(?\s*([+-]?\d{1,3})\s*\)?)?"
 _QUANTITY = re.compile(rf"\s*({_NUMBER}){_TIMES_TEN}\s*(.*?)\s*")
 _UNIT_CHARS = re.compile(r"[A-Za-z%*/^0-9.()\s\-\u00b0]*")
-_BIG_POWER = re.compile(r"(\^|\*\*)\s*\(?\s*[+-]?\d{2,}")
+_POWER = r"(?:\^|\*\*)"
+_BIG_POWER = re.compile(rf"{_POWER}\s*\(?\s*[+-]?\s*\d{{2,}}")
+_POWER_TOWER = re.compile(rf"{_POWER}[^A-Za-z]*?{_POWER}")  # m^9^9^9: pint would compute it
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _LABEL = re.compile(r"^\s*[A-Za-z\u0370-\u03ff][A-Za-z0-9_\u0370-\u03ff ]{0,11}=\s*")
 _SUPERSCRIPTS = re.compile("[\u207a\u207b]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+")
 _PLAIN_DIGITS = str.maketrans("\u207a\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079", "+-0123456789")
@@ -90,7 +93,14 @@ def unit_info(text: str) -> UnitInfo:
     except Exception as exc:  # pint raises many kinds; all mean "not a unit we can read"
         raise QuantityError(f"unknown unit {text!r}") from exc
     angle = sum(int(p) for name, p in root._units.items() if name in _ANGLE_UNITS)
-    return UnitInfo(text, float(base.magnitude), str(unit.dimensionality), angle)
+    return UnitInfo(text, float(base.magnitude), _canonical(unit.dimensionality), angle)
+
+
+def _canonical(dimensionality) -> str:
+    """One spelling per dimension: pint writes lbf as [length]*[mass]/... but N as [mass]*[length]/..."""
+    if not dimensionality:
+        return "dimensionless"
+    return " * ".join(f"{name}^{power:g}" for name, power in sorted(dimensionality.items()))
 
 
 #: A word for each kind of quantity, keyed by an example unit (pint spells the dimensions).
@@ -154,6 +164,8 @@ def parse_quantity(text: str) -> Reading:
     """Read "1.2 kN", "-3.5e2", "5 %", "θ = 168.8°" or "2.4 × 10^3 N" without evaluating anything."""
     if len(text) > MAX_ANSWER_LENGTH:
         raise QuantityError(f"answer longer than {MAX_ANSWER_LENGTH} characters")
+    if _CONTROL.search(text):
+        raise QuantityError("the answer contains control characters")
     cleaned = _plain(text).strip()
     cleaned = _LABEL.sub("", cleaned, count=1)
     if re.fullmatch(r"[+-]?\d{1,3},\d{3}(?:\D.*)?", cleaned):
@@ -163,13 +175,18 @@ def parse_quantity(text: str) -> Reading:
     if not match:
         raise QuantityError(f"cannot read {text.strip()!r} as a number (with an optional unit)")
     number, power, unit = match.groups()
-    value = float(number.replace(" ", "")) * (10.0 ** int(power) if power else 1.0)
+    try:
+        value = float(number.replace(" ", "")) * (10.0 ** int(power) if power else 1.0)
+    except OverflowError:
+        value = math.inf
     if not math.isfinite(value):
         raise QuantityError(f"{text.strip()!r} is not a finite number")
     if not unit:
         return Reading(value, None)
-    if len(unit) > MAX_UNIT_LENGTH or not _UNIT_CHARS.fullmatch(unit) or _BIG_POWER.search(unit):
+    if len(unit) > MAX_UNIT_LENGTH or not _UNIT_CHARS.fullmatch(unit):
         raise QuantityError(f"cannot read the unit in {text.strip()!r}")
+    if _BIG_POWER.search(unit) or _POWER_TOWER.search(unit):
+        raise QuantityError(f"cannot read {text.strip()!r}: exponents above 9, or exponents of exponents, are not accepted")
     unit_info(unit)  # raises QuantityError naming the unit
     return Reading(value, unit)
 

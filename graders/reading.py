@@ -1,9 +1,8 @@
 """Read one typed answer into a value in the unit the sheet asks for, without evaluating anything.
 
-`exgen.units.parse_quantity` does the reading; this module guards it (power towers such as
-"m^9^9^9" make pint compute huge integers, and "10^999" overflows), turns any failure into a
-QuantityError (a format problem), and converts to the asked unit (a DimensionError is a wrong
-answer of the wrong kind, told apart from both).
+`exgen.units.parse_quantity` does the reading (and refuses power towers, overflows and control
+characters); this module turns any failure into a QuantityError (a format problem) and converts
+to the asked unit (a DimensionError is a wrong answer of the wrong kind, told apart from both).
 """
 from __future__ import annotations
 
@@ -15,12 +14,7 @@ from exgen import units
 from exgen.errors import DimensionError, QuantityError
 from exgen.template import PartSpec
 
-#: Exponents pint may see: at most two digits, never an exponent of an exponent.
-_POWER = r"(?:\^|\*\*)"
-_POWER_TOWER = re.compile(rf"{_POWER}[^A-Za-z]*?{_POWER}")
-_BIG_EXPONENT = re.compile(rf"{_POWER}\s*\(?\s*[+-]?\s*\d{{3,}}")
 _DEGREE_SIGNS = re.compile(r"\s*[\u00b0\u00ba\u02da](?![CF])")
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _WORDS_BLANK = ("", "~", "null", "none", "-")
 NUMERIC_TYPES = ("number", "angle", "integer")
 
@@ -45,13 +39,7 @@ def is_blank(text: str | None) -> bool:
 
 def read_quantity(text: str) -> units.Reading:
     """parse_quantity behind a guard: every failure, whatever raised it, is a QuantityError."""
-    if len(text) > units.MAX_ANSWER_LENGTH:
-        raise QuantityError(f"answer longer than {units.MAX_ANSWER_LENGTH} characters")
-    if _CONTROL.search(text):
-        raise QuantityError("the answer contains control characters")
     shown = text.strip()
-    if _POWER_TOWER.search(text) or _BIG_EXPONENT.search(text):
-        raise QuantityError(f"cannot read {shown!r}: exponents of exponents and powers above 99 are not accepted")
     cleaned = _DEGREE_SIGNS.sub(" deg", text)
     try:
         return units.parse_quantity(cleaned)
@@ -70,7 +58,7 @@ def read_answer(text: str, part: PartSpec) -> Given:
         value = reading.value
     else:
         try:
-            value = _convert(reading.value, reading.unit, part.unit)
+            value = units.convert(reading.value, reading.unit, part.unit)
         except (DimensionError, QuantityError):
             raise
         except Exception as exc:  # a unit pint parsed but cannot convert
@@ -80,31 +68,12 @@ def read_answer(text: str, part: PartSpec) -> Given:
     return Given(text, value, reading.value, reading.unit)
 
 
-def _convert(value: float, from_unit: str, to_unit: str) -> float:
-    """units.convert, also when pint spells one dimension in two orders: it writes lbf, kgf and hp as
-    '[length] * [mass] ...' but N and W as '[mass] * [length] ...', which units.convert calls different."""
-    try:
-        return units.convert(value, from_unit, to_unit)
-    except DimensionError:
-        src, dst = units.unit_info(from_unit), units.unit_info(to_unit)
-        if src.angle == dst.angle and _canonical_dims(src.dims) == _canonical_dims(dst.dims):
-            return value * src.factor / dst.factor
-        raise
-
-
 def kind_of(unit: str) -> str:
     """A word for what a unit measures ("force", "length")."""
     try:
         return units.unit_info(unit).kind
     except QuantityError:
         return "unknown unit"
-
-
-def _canonical_dims(dims: str) -> str:
-    """'[mass] * [length] / [time] ** 2' -> '[length] * [mass] / [time] ** 2' (factors sorted)."""
-    head, *below = [p.strip() for p in dims.split(" / ")]
-    above = sorted(f.strip() for f in head.split(" * ")) if head != "1" else ["1"]
-    return " / ".join([" * ".join(above), *sorted(below)])
 
 
 def unit_name(unit: str) -> str:

@@ -71,7 +71,9 @@ def test_example_1_5_flat_belt(bank):
     assert got == pytest.approx(_example_1_5_by_hand(), rel=1e-12)
     # the figures a student should reach: 168.8 deg, 5.236 m/s, 6.146 / 6.070 / 5.997 kW, 289.8 / 695.6 N m
     assert [round(got[k], 3) for k in "abcdefg"] == [168.842, 5.236, 6.146, 6.070, 5.997, 289.827, 695.585]
-    assert warnings == []
+    # The example's belt runs slowly: Tc = 24.7 N is 1.2 % of T_max, so (c) and (d) differ by 1.2 %.
+    # Drawn variants keep Tc above 3 % of T_max so that ignoring it is a visible mistake.
+    assert warnings == ["centrifugal tension too small to matter"]
 
 
 def test_example_1_6_v_belt(bank):

@@ -67,7 +67,7 @@ def test_convert(value, src, dst, expected):
 @pytest.mark.parametrize("src, dst, message", [
     ("m", "N", "'m' is a length, but a force is asked (in N)"),
     ("kg", "kW", "'kg' is a mass, but a power is asked (in kW)"),
-    ("deg", "percent", "'deg' is a angle, but a pure number is asked"),
+    ("deg", "percent", "'deg' is an angle, but a pure number is asked"),
 ])
 def test_convert_refuses_the_wrong_kind(src, dst, message):
     with pytest.raises(DimensionError) as info:
@@ -99,3 +99,17 @@ def test_display():
 def test_absurd_unit_powers_are_refused(text):
     with pytest.raises(QuantityError):
         parse_quantity(text)
+
+
+@pytest.mark.parametrize("text", ["1 m^9^9^9", "1 m**9**9**9", "1 m^(9^(9^9))", "1.2 x 10^999 N", "5\x07 N"])
+def test_towers_overflows_and_control_characters_are_refused(text):
+    with pytest.raises(QuantityError):
+        parse_quantity(text)
+
+
+@pytest.mark.parametrize("value, src, dst, expected", [
+    (1.0, "lbf", "N", 4.4482216), (1.0, "kgf", "N", 9.80665), (1.0, "hp", "W", 745.69987),
+])
+def test_one_dimension_in_any_spelling(value, src, dst, expected):
+    assert convert(value, src, dst) == pytest.approx(expected)
+    assert unit_info(src).kind == unit_info(dst).kind

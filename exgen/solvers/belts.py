@@ -10,6 +10,11 @@ import math
 
 from ..mechanics import belts as mb
 
+#: How far apart a right answer and a known mistake must be, for parts graded at 1 % and at
+#: 0.2 % (small effects such as slip, thickness and creep are asked to four figures).
+APART = 0.03
+APART_FINE = 0.006
+
 
 def _radii(p, d):
     r1 = d.step("r1", p.d1 / 2, "m", formula=r"\frac{@d1}{2}")
@@ -75,6 +80,7 @@ def belt_power(p, d):
     # (d) inelastic belt, centrifugal tension considered
     tc = d.step("Tc", mb.centrifugal_tension(p.m, v), "N", symbol=r"T_c", formula=r"@m\,@v^2")
     d.require(tc < t1 / 3, "centrifugal tension above a third of the maximum: past the maximum-power speed")
+    d.require(tc > APART * t1, "centrifugal tension too small to matter")
     t2 = d.step("T2", mb.slack_tension(t1, ratio, tc), "N", symbol=r"T_2",
                 formula=r"\frac{@T1 - @Tc}{@ratio} + @Tc")
     p_heavy = d.step("P_heavy", mb.power(t1, t2, v), "W", symbol=r"P",
@@ -85,6 +91,7 @@ def belt_power(p, d):
     # (e) elastic belt: creep slows the driven side
     creep = d.step("creep", mb.creep_speed_ratio(t1, t2, p.A, p.E), "", symbol=r"\frac{v_2}{v_1}",
                    formula=r"1 - \frac{@T1 - @T2}{@A\,@E}")
+    d.require_apart(1.0, creep, APART_FINE, "creep")
     v2 = d.step("v2", v * creep, "m/s", symbol=r"v_2", formula=r"@v\,@creep")
     p_elastic = d.step("P_elastic", mb.power(t1, t2, v2), "W", symbol=r"P",
                        formula=r"(@T1 - @T2)\,@v2")
@@ -111,6 +118,8 @@ def driven_diameter(p, d):
     both = d.step("d2_both", mb.driven_diameter(p.d1, n, p.t, p.G), "m", symbol=r"d_2",
                   formula=r"\frac{(@d1 + @t)(1 - @G)}{@n} - @t")
     d.require(both > 0, "driven pulley would have no size")
+    d.require_apart(both, mb.driven_diameter(p.d1, n, 0.0, p.G), APART_FINE, "belt thickness")
+    d.require_apart(both, mb.driven_diameter(p.d1, n, p.t), APART_FINE, "slip")
     for name, thickness, slip_fraction in (("d2_plain", 0, 0), ("d2_thick", p.t, 0),
                                            ("d2_slip", 0, p.G), ("d2_both", p.t, p.G)):
         d.mistake(name, "ratio_inverted", (p.d1 + thickness) * n * (1 - slip_fraction) - thickness)
@@ -129,8 +138,9 @@ def driven_speed(p, d):
                    formula=r"@N1\,\frac{@d1}{@d2}")
     slipping = d.step("N2_slip", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, g), "rad/s", symbol=r"\omega_2",
                       formula=r"@N1\,\frac{@d1}{@d2}\,(1 - @G)")
-    d.step("N2_thick", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, g), "rad/s", symbol=r"\omega_2",
+    thick = d.step("N2_thick", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, g), "rad/s", symbol=r"\omega_2",
                    formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)")
+    d.require_apart(thick, slipping, APART_FINE, "belt thickness")
     d.mistake("N2_ideal", "ratio_inverted", p.N1 * p.d2 / p.d1)
     d.mistake("N2_slip", "ratio_inverted", p.N1 * p.d2 / p.d1 * (1 - g))
     d.mistake("N2_slip", "slip_not_applied", ideal)
@@ -146,8 +156,9 @@ def compound_drive(p, d):
     main = d.step("N2", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, p.G), "rad/s", symbol=r"\omega_2",
                   formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)", note="main shaft")
     d.step("N4", main * mb.speed_ratio(p.d3, p.d4, p.t, p.G), "rad/s", symbol=r"\omega_4",
-                     formula=r"@N2\,\frac{@d3 + @t}{@d4 + @t}\,(1 - @G)",
-                     note="the pulley d3 turns with the main shaft")
+           formula=r"@N2\,\frac{@d3 + @t}{@d4 + @t}\,(1 - @G)",
+           note="the pulley $d_3$ turns with the main shaft")
+    d.require_apart(main, p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G), APART_FINE, "belt thickness")
     d.mistake("N2", "slip_not_applied", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t))
     d.mistake("N2", "thickness_forgotten", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G))
     d.mistake("N2", "ratio_inverted", p.N1 * (p.d2 + p.t) / (p.d1 + p.t) * (1 - p.G))
@@ -190,7 +201,7 @@ def max_power(p, d):
     d.mistake("v_opt", "tc_half", math.sqrt(p.T_max / (2 * p.m)))
     tc = d.step("Tc", p.m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v_opt^2")
     d.step("P_max", (p.T_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\max}",
-                   formula=r"(@T_max - @Tc)\left(1 - \frac{1}{@ratio}\right)@v_opt")
+                   formula=r"(@T_max - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v_opt")
     d.mistake("P_max", "centrifugal_ignored", p.T_max * (1 - 1 / ratio) * v)
     d.mistake("P_max", "theta_in_degrees", (p.T_max - tc) * v)
     d.step("N_opt", v / r1, "rad/s", symbol=r"\omega_1", formula=r"\frac{@v_opt}{@r1}",
@@ -219,7 +230,7 @@ def v_belt_count(p, d):
     ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol=r"\frac{T_1 - T_c}{T_2 - T_c}",
                    formula=r"e^{@mu\,@theta / \sin @beta}")
     per_belt = d.step("P_belt", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\mathrm{belt}}",
-                      formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)@v")
+                      formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v")
     count = d.step("n_belts", mb.belts_needed(p.P, per_belt), "", symbol="n",
                    formula=r"\left\lceil \frac{@P}{@P_belt} \right\rceil", note="rounded up to whole belts")
     d.require(2 <= count <= 12, "an unrealistic number of belts")
@@ -234,7 +245,7 @@ def v_belt_count(p, d):
                          formula=r"e^{@mu\,@theta_idler / \sin @beta}")
     per_belt_idler = d.step("P_belt_idler", (t_max - tc) * (1 - 1 / ratio_idler) * v, "W",
                             symbol=r"P_{\mathrm{belt}}'",
-                            formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio_idler}\right)@v")
+                            formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio_idler}\right)\,@v")
     change = d.step("change", per_belt_idler / per_belt - 1, "", symbol=r"\Delta P / P",
                     formula=r"\frac{@P_belt_idler}{@P_belt} - 1")
     d.step("trend", "increase" if change > 0 else "decrease", "", symbol=r"\text{power}",

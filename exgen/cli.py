@@ -1,0 +1,213 @@
+"""The `exgen` command: parses arguments, calls the library, prints. Errors meant for the user
+are printed as one message (no traceback) with exit status 1."""
+from __future__ import annotations
+
+import argparse
+import json
+import secrets
+import sys
+from pathlib import Path
+
+from . import __version__
+from .errors import ExgenError
+
+
+def _progress(items, total, label="working"):
+    from tqdm import tqdm
+
+    return tqdm(items, total=total, desc=label, unit="item", disable=None, leave=False)
+
+
+def _bank(args):
+    from .bank import load_bank
+
+    return load_bank([Path(p) for p in args.bank])
+
+
+def _secret(args, assignment, create: bool):
+    from .seeds import load_secret
+
+    path = Path(args.secret_file) if args.secret_file else assignment.secret_file
+    secret, source = load_secret(path, create=create)
+    if source.endswith("(new)"):
+        print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
+    return secret
+
+
+def cmd_list(args) -> int:
+    bank = _bank(args)
+    rows = [t for t in bank if args.chapter is None or t.chapter == args.chapter]
+    width = max((len(t.id) for t in rows), default=0)
+    for t in rows:
+        source = f"  [{t.source}]" if t.source else ""
+        print(f"{t.id:<{width}}  {t.title}{source}")
+    print(f"\n{len(rows)} template(s)", file=sys.stderr)
+    return 0
+
+
+def cmd_show(args) -> int:
+    from .render.text import variant_text
+    from .variant import make_variant
+
+    template = _bank(args).get(args.id)
+    seed = args.seed if args.seed is not None else secrets.randbits(32)
+    print(variant_text(make_variant(template, seed), key=args.key))
+    if args.seed is None:
+        print(f"\n(seed {seed}: `exgen show {args.id} --seed {seed}` shows this variant again)", file=sys.stderr)
+    return 0
+
+
+def cmd_solve(args) -> int:
+    from .solve import parse_settings, solve
+
+    template = _bank(args).get(args.id)
+    variant, warnings = solve(template, parse_settings(args.set))
+    for warning in warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    if args.json:
+        print(json.dumps(solution_json(variant), indent=2, ensure_ascii=False))
+        return 0
+    if args.steps:
+        from .render.text import variant_text
+
+        print(variant_text(variant, key=True))
+        return 0
+    print(template.title)
+    for part_id, answer in variant.answers.items():
+        print(f"  ({part_id}) {variant.asks[part_id]}: {answer.text}")
+    return 0
+
+
+def solution_json(variant) -> dict:
+    def plain(value):
+        return value if isinstance(value, (int, float, str)) else str(value)
+
+    return {
+        "template": variant.template.id,
+        "given": {p.name: {"value": p.text, "unit": p.unit} for p in variant.params},
+        "parts": {
+            part_id: {"ask": variant.asks[part_id], "value": plain(a.value), "unit": a.part.unit, "text": a.text}
+            for part_id, a in variant.answers.items()
+        },
+        "steps": [{"name": s.name, "value": plain(s.value), "unit": s.unit} for s in variant.steps],
+    }
+
+
+def cmd_generate(args) -> int:
+    from .assignment import load_assignment, load_roster
+    from .generate import generate
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank)
+    roster_path = Path(args.roster) if args.roster else assignment.roster
+    if roster_path is None:
+        raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
+    students = load_roster(roster_path)
+    secret = _secret(args, assignment, create=True)
+    issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf, progress=_progress)
+    kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
+    print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; keys in {issued.out / 'keys'}")
+    print(f"manifest: {issued.manifest}")
+    return 0
+
+
+def cmd_grade(args) -> int:
+    from graders.grade import grade_batch
+    from graders.report import write_results
+
+    from .assignment import load_assignment, load_roster
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank)
+    roster_path = Path(args.roster) if args.roster else assignment.roster
+    roster = load_roster(roster_path) if roster_path else None
+    secret = _secret(args, assignment, create=False)
+    submissions = Path(args.submissions)
+    if not submissions.is_dir():
+        raise ExgenError(f"{submissions}: not a directory of answer files")
+    batch = grade_batch(assignment, bank, secret, submissions, roster=roster, progress=_progress)
+    paths = write_results(batch, Path(args.out))
+    print(batch.summary() if hasattr(batch, "summary") else f"graded {len(batch.results)} submission(s)")
+    for name, path in paths.items():
+        print(f"{name}: {path}")
+    return 0
+
+
+def cmd_validate(args) -> int:
+    from .validate import validate_bank
+
+    bank = _bank(args)
+    templates = [bank.get(i) for i in args.ids] if args.ids else list(bank)
+    reports = validate_bank(templates, seeds=args.seeds, progress=_progress)
+    failed = [r for r in reports if not r.ok]
+    for report in reports:
+        print(report.line())
+        for problem in report.problems + report.warnings:
+            print(f"    {problem}")
+    print(f"\n{len(reports) - len(failed)} of {len(reports)} template(s) valid over {args.seeds} seeds each")
+    return 1 if failed else 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="exgen", description="Unique, gradeable Mechanics of Machines problems: sheets, keys, grading.")
+    parser.add_argument("--version", action="version", version=f"exgen {__version__}")
+    parser.add_argument("--bank", action="append", default=[], metavar="DIR",
+                        help="an extra folder of templates (repeatable; also $EXGEN_BANKS)")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
+
+    p = sub.add_parser("list", help="list the templates")
+    p.add_argument("--chapter", type=int, help="only this chapter")
+    p.set_defaults(func=cmd_list)
+
+    p = sub.add_parser("show", help="draw one variant of a template and print it")
+    p.add_argument("id")
+    p.add_argument("--seed", type=int, help="the variant's seed (default: a fresh one)")
+    p.add_argument("--key", action="store_true", help="also print the answers and worked solution")
+    p.set_defaults(func=cmd_show)
+
+    p = sub.add_parser("solve", help="solve a template for values you give")
+    p.add_argument("id")
+    p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                   help="a given value with its unit, e.g. --set d1=600mm (repeat for each parameter)")
+    p.add_argument("--json", action="store_true", help="print every part's value and unit as JSON")
+    p.add_argument("--steps", action="store_true", help="print the worked solution")
+    p.set_defaults(func=cmd_solve)
+
+    p = sub.add_parser("generate", help="a sheet, answer form and key for every student on a roster")
+    p.add_argument("assignment", help="the assignment file (YAML)")
+    p.add_argument("--roster", help="class list CSV with an id column (name, email optional)")
+    p.add_argument("--out", required=True, help="output folder")
+    p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
+    p.add_argument("--no-pdf", action="store_true", help="Markdown only (faster)")
+    p.set_defaults(func=cmd_generate)
+
+    p = sub.add_parser("grade", help="grade a folder of returned answer files")
+    p.add_argument("assignment", help="the assignment file the sheets were generated from")
+    p.add_argument("submissions", help="folder of answer files (YAML, JSON or CSV)")
+    p.add_argument("--out", required=True, help="output folder for the gradebook and feedback")
+    p.add_argument("--roster", help="class list CSV: students without a file get 0")
+    p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
+    p.set_defaults(func=cmd_grade)
+
+    p = sub.add_parser("validate", help="draw many variants of every template and check them")
+    p.add_argument("ids", nargs="*", help="only these templates")
+    p.add_argument("--seeds", type=int, default=200, help="variants drawn per template (default 200)")
+    p.set_defaults(func=cmd_validate)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except ExgenError as exc:
+        print(f"exgen: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("exgen: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())
