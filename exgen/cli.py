@@ -95,7 +95,7 @@ def solution_json(variant) -> dict:
 
 def cmd_generate(args) -> int:
     from .assignment import load_assignment, load_roster
-    from .generate import generate
+    from .generate import default_jobs, generate
 
     bank = _bank(args)
     assignment = load_assignment(Path(args.assignment), bank)
@@ -104,7 +104,8 @@ def cmd_generate(args) -> int:
         raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
     students = load_roster(roster_path)
     secret = _secret(args, assignment, create=True)
-    issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf, progress=_progress)
+    issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
+                      jobs=args.jobs or default_jobs(), progress=_progress)
     kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
     print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; keys in {issued.out / 'keys'}")
     print(f"manifest: {issued.manifest}")
@@ -180,6 +181,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
     p.add_argument("--no-pdf", action="store_true", help="Markdown only (faster)")
+    p.add_argument("--jobs", type=int, help="processes making PDFs (default: one per core, up to 8)")
     p.set_defaults(func=cmd_generate)
 
     p = sub.add_parser("grade", help="grade a folder of returned answer files")

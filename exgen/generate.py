@@ -10,6 +10,9 @@ the run with nothing half-written. Student files and keys go to separate folders
 """
 from __future__ import annotations
 
+import multiprocessing
+import os
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterable
@@ -73,12 +76,31 @@ def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
         (key_dir / "key.pdf").write_bytes(key_pdf(sheet))
 
 
+def _write_in_worker(job) -> str:
+    """Rebuild one sheet from its inputs (drawing is pure and cheap) and write its files."""
+    assignment, student, bank, secret, out, pdf = job
+    write_student(build_sheet(assignment, student, bank, secret), out, pdf)
+    return student.id
+
+
+def default_jobs() -> int:
+    return max(1, min(8, os.cpu_count() or 1))
+
+
 def generate(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes, out: Path,
-             *, pdf: bool = True, progress: Progress = _no_progress) -> Issued:
+             *, pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress) -> Issued:
+    """Draw every sheet, then write them; with jobs > 1 the PDFs are made in parallel processes."""
     sheets = draw_sheets(assignment, students, bank, secret, progress)
     out.mkdir(parents=True, exist_ok=True)
-    for sheet in progress(sheets, len(sheets), "writing"):
-        write_student(sheet, out, pdf)
+    if jobs > 1 and len(sheets) > 1:
+        work = [(assignment, s.student, bank, secret, out, pdf) for s in sheets]
+        # spawn, not fork: a forked child can inherit typst's threads' locks held, and hang
+        with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+            for _ in progress(pool.map(_write_in_worker, work, chunksize=4), len(work), "writing"):
+                pass
+    else:
+        for sheet in progress(sheets, len(sheets), "writing"):
+            write_student(sheet, out, pdf)
     manifest_path = out / "manifest.json"
     write_manifest(build_manifest(assignment, sheets, bank, secret), manifest_path)
     return Issued(out, tuple(sheets), manifest_path)

@@ -1,0 +1,83 @@
+"""The `exgen` command as a user types it: output, exit status, and errors without tracebacks."""
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from exgen.cli import main
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+EXAMPLE_1_5 = ["--set", "d1=0.5m", "--set", "d2=1.2m", "--set", "X=3.6m", "--set", "N1=200rpm", "--set", "mu=0.3",
+               "--set", "m=0.9kg/m", "--set", "A=320mm^2", "--set", "E=300MN/m^2", "--set", "T_max=2kN"]
+
+
+def test_list(capsys):
+    assert main(["list"]) == 0
+    out = capsys.readouterr().out
+    assert "belts.flat_belt_power" in out and "[Example 1.5]" in out
+
+
+def test_show_is_reproducible_by_seed(capsys):
+    assert main(["show", "belts.flat_belt_power", "--seed", "7"]) == 0
+    first = capsys.readouterr().out
+    assert main(["show", "belts.flat_belt_power", "--seed", "7"]) == 0
+    assert capsys.readouterr().out == first and "(a)" in first
+
+
+def test_solve_prints_example_1_5(capsys):
+    assert main(["solve", "belts.flat_belt_power", *EXAMPLE_1_5]) == 0
+    out = capsys.readouterr().out
+    for expected in ("168.8\u00b0", "5.236 m/s", "6.146 kW", "6.070 kW", "5.997 kW", "289.8 N\u00b7m", "695.6 N\u00b7m"):
+        assert expected in out
+
+
+def test_solve_json_has_every_part_value_and_unit(capsys):
+    assert main(["solve", "belts.flat_belt_power", "--json", *EXAMPLE_1_5]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["parts"]["a"]["unit"] == "deg" and data["parts"]["a"]["value"] == pytest.approx(168.8415, rel=1e-6)
+    assert data["parts"]["c"]["unit"] == "kW" and data["parts"]["c"]["value"] == pytest.approx(6.14594, rel=1e-5)
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["show", "belts.nope"], "no template with id 'belts.nope'"),
+    (["solve", "belts.flat_belt_power", "--set", "d1=0.5m"], "give a value for d2"),
+    (["solve", "belts.flat_belt_power", *EXAMPLE_1_5, "--set", "d1=0.5kg"], "d1=0.5kg: 'kg' is a mass, but a length is asked"),
+    (["generate", str(EXAMPLES / "missing.yaml"), "--out", "x"], "missing.yaml: cannot read"),
+])
+def test_user_errors_are_one_line_without_traceback(capsys, argv, message):
+    assert main(argv) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("exgen: ") and message in err and "Traceback" not in err
+
+
+def test_generate_then_grade(tmp_path, capsys, monkeypatch):
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    work = tmp_path / "course"
+    shutil.copytree(EXAMPLES, work)
+    assert main(["generate", str(work / "tutorial1.yaml"), "--out", str(tmp_path / "out"), "--no-pdf"]) == 0
+    assert (work / "course.secret").is_file()  # created on first use
+    submissions = tmp_path / "returned"
+    submissions.mkdir()
+    shutil.copy(tmp_path / "out" / "students" / "A21001" / "answers.yaml", submissions / "A21001.yaml")
+    (submissions / "A21002.yaml").write_bytes(b"\x00\x01 not yaml")
+    capsys.readouterr()
+    assert main(["grade", str(work / "tutorial1.yaml"), str(submissions), "--out", str(tmp_path / "graded")]) == 0
+    out = capsys.readouterr().out
+    assert "1 unreadable file" in out and "no submission" in out
+    gradebook = (tmp_path / "graded" / "gradebook.csv").read_text()
+    assert "A21001" in gradebook and "A21006" in gradebook
+
+
+def test_grade_without_the_secret_says_so(tmp_path, capsys, monkeypatch):
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    work = tmp_path / "course"
+    shutil.copytree(EXAMPLES, work)
+    (work / "course.secret").unlink(missing_ok=True)
+    assert main(["grade", str(work / "tutorial1.yaml"), str(tmp_path), "--out", str(tmp_path / "g")]) == 1
+    assert "no course secret" in capsys.readouterr().err
+
+
+def test_validate_passes_on_the_bank(capsys):
+    assert main(["validate", "belts.drive_geometry", "--seeds", "30"]) == 0
+    assert "1 of 1 template(s) valid" in capsys.readouterr().out

@@ -1,0 +1,82 @@
+"""Issuing an assignment: files per student, byte-identical on regeneration, a manifest without secrets."""
+import json
+from pathlib import Path
+
+import pytest
+
+from exgen.assignment import load_assignment, load_roster
+from exgen.generate import generate
+from exgen.seeds import derive_seed
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+SECRET = b"a course secret used only by these tests"
+
+
+@pytest.fixture(scope="module")
+def issued(tmp_path_factory, bank):
+    assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
+    students = load_roster(EXAMPLES / "roster.csv")[:3]
+    first = tmp_path_factory.mktemp("first")
+    second = tmp_path_factory.mktemp("second")
+    generate(assignment, students, bank, SECRET, first)
+    generate(assignment, students, bank, SECRET, second, jobs=2)  # parallel PDFs, same bytes
+    return first, second, students
+
+
+def files(root: Path) -> dict[str, bytes]:
+    return {str(p.relative_to(root)): p.read_bytes() for p in sorted(root.rglob("*")) if p.is_file()}
+
+
+def test_each_student_gets_a_sheet_a_form_and_a_key(issued):
+    first, _, students = issued
+    for student in students:
+        folder = first / "students" / student.id
+        assert {"sheet.md", "sheet.pdf", "answers.yaml"} <= {p.name for p in folder.iterdir()}
+        assert (folder / "sheet.pdf").read_bytes().startswith(b"%PDF")
+        assert {"key.md", "key.pdf"} <= {p.name for p in (first / "keys" / student.id).iterdir()}
+    # the student folder can be handed out as it is: no key material in it
+    assert not any("key" in p.name for p in (first / "students").rglob("*"))
+
+
+def test_regenerating_gives_byte_identical_files_in_one_process_or_several(issued):
+    first, second, _ = issued
+    assert files(first) == files(second)
+
+
+def test_two_students_get_different_numbers(issued):
+    first, _, students = issued
+    sheets = [(first / "students" / s.id / "sheet.md").read_text() for s in students]
+    statements = [s.split("## Question 1", 1)[1] if "## Question 1" in s else s for s in sheets]
+    assert len(set(statements)) == len(students)
+
+
+def test_manifest_records_what_was_issued_but_no_secret_or_seed(issued, bank):
+    first, _, students = issued
+    text = (first / "manifest.json").read_text()
+    manifest = json.loads(text)
+    assert manifest["assignment"]["id"] == "bmcm2723-tut1"
+    assert manifest["templates"]["belts.flat_belt_power"] == bank.get("belts.flat_belt_power").version
+    assert [s["id"] for s in manifest["students"]] == [s.id for s in students]
+    assert manifest["students"][0]["questions"][0]["seed_input"] == f"bmcm2723-tut1/{students[0].id}/q1"
+    assert SECRET.decode() not in text and SECRET.hex() not in text
+    seed = derive_seed(SECRET, "bmcm2723-tut1", students[0].id, "q1")
+    assert str(seed) not in text
+
+
+def test_keys_grade_themselves_at_full_marks(issued, bank, tmp_path):
+    from graders.grade import grade_batch
+
+    first, _, students = issued
+    assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
+    from exgen.assignment import build_sheet
+    from graders.answers import answer_form
+
+    for student in students:
+        sheet = build_sheet(assignment, student, bank, SECRET)
+        form = answer_form(sheet)
+        for question in sheet.questions:
+            for part_id, answer in question.variant.answers.items():
+                form = form.replace(f'    {part_id}: ""', f'    {part_id}: "{answer.text}"', 1)
+        (tmp_path / f"{student.id}.yaml").write_text(form, encoding="utf-8")
+    batch = grade_batch(assignment, bank, SECRET, tmp_path, roster=students)
+    assert [r.percent for r in batch.sheets] == [100.0] * len(students)
