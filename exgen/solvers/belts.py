@@ -46,11 +46,11 @@ def _belt_speed(p, d, r1):
 
 def _tension_ratio(p, d, theta, beta=None):
     if beta is None:
-        ratio = d.step("ratio", mb.tension_ratio(p.mu, theta), "", symbol=r"\frac{T_1}{T_2}",
-                       formula=r"e^{@mu\,@theta}")
+        ratio = d.step("ratio", mb.tension_ratio(p.mu, theta), "", symbol="R",
+                       formula=r"e^{@mu\,@theta}", note="the tension ratio $T_1/T_2$")
     else:
-        ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol=r"\frac{T_1}{T_2}",
-                       formula=r"e^{@mu\,@theta / \sin @beta}")
+        ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol="R",
+                       formula=r"e^{@mu\,@theta / \sin @beta}", note="the tension ratio $T_1/T_2$ of a V-belt")
     return ratio
 
 
@@ -227,8 +227,8 @@ def v_belt_count(p, d):
     m = d.step("m", p.rho * p.A, "kg/m", formula=r"@rho\,@A")
     tc = d.step("Tc", m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v^2")
     d.require(tc < t_max / 3, "belt above its maximum-power speed")
-    ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol=r"\frac{T_1 - T_c}{T_2 - T_c}",
-                   formula=r"e^{@mu\,@theta / \sin @beta}")
+    ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol="R",
+                   formula=r"e^{@mu\,@theta / \sin @beta}", note="the tension ratio $(T_1 - T_c)/(T_2 - T_c)$")
     per_belt = d.step("P_belt", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\mathrm{belt}}",
                       formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v")
     count = d.step("n_belts", mb.belts_needed(p.P, per_belt), "", symbol="n",
@@ -241,7 +241,7 @@ def v_belt_count(p, d):
     theta_idler = d.step("theta_idler", theta * (1 + p.idler), "rad", symbol=r"\theta'",
                          formula=r"@theta\,(1 + @idler)")
     ratio_idler = d.step("ratio_idler", mb.tension_ratio(p.mu, theta_idler, beta), "",
-                         symbol=r"\left(\frac{T_1 - T_c}{T_2 - T_c}\right)'",
+                         symbol="R'",
                          formula=r"e^{@mu\,@theta_idler / \sin @beta}")
     per_belt_idler = d.step("P_belt_idler", (t_max - tc) * (1 - 1 / ratio_idler) * v, "W",
                             symbol=r"P_{\mathrm{belt}}'",
