@@ -24,7 +24,7 @@ BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure"}
 PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value"}
-PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "choices"}
+PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "choices", "angle"}
 TOL_KEYS = {"rel", "abs", "sig"}
 MAX_VALUES = 100_000
 
@@ -283,6 +283,8 @@ class _Reader:
             choices = tuple(str(c) for c in spec.get("choices") or ())
             if kind == "choice" and not choices:
                 self.error(where + ("choices",), "a choice answer needs its list of choices")
+            if kind == "polar" and not spec.get("angle"):
+                self.error(where + ("angle",), "a polar answer needs `angle:`, the step holding its angle")
             self.check_text(str(spec.get("ask", "")), names, where + ("ask",))
             points = spec.get("points", 1)
             if isinstance(points, bool) or not isinstance(points, (int, float)) or points <= 0:
@@ -292,7 +294,7 @@ class _Reader:
                 id=part_id, ask=str(spec.get("ask", "")), answer=str(spec.get("answer", "")),
                 unit=str(spec.get("unit", "")), type=kind, tol=self.tolerance(spec.get("tol"), kind, where),
                 points=float(points), mistakes=self.mistakes(spec.get("mistakes"), where),
-                uses=uses, choices=choices,
+                uses=uses, choices=choices, angle=str(spec.get("angle") or ""),
             ))
             seen.append(part_id)
         return tuple(out)
@@ -301,6 +303,8 @@ class _Reader:
         from .template import DEFAULT_ANGLE_ABS_TOL_DEG, DEFAULT_REL_TOL
 
         defaults = {"rel": 0.0, "abs": DEFAULT_ANGLE_ABS_TOL_DEG} if kind == "angle" else {"rel": DEFAULT_REL_TOL, "abs": 0.0}
+        if kind == "polar":
+            defaults = {"rel": DEFAULT_REL_TOL, "abs": DEFAULT_ANGLE_ABS_TOL_DEG}
         if kind in ("integer", "choice"):
             defaults = {"rel": 0.0, "abs": 0.0}
         if spec is None:

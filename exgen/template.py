@@ -8,9 +8,10 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 from pathlib import Path
 
-ANSWER_TYPES = ("number", "angle", "integer", "choice")
+ANSWER_TYPES = ("number", "angle", "integer", "choice", "polar")
 
 #: Default grading rules (DESIGN.md): 1 % relative, no absolute floor, angles within 0.5 deg.
+#: A polar answer (a magnitude at an angle) uses `rel` for the magnitude and `abs` (deg) for the angle.
 DEFAULT_REL_TOL = 0.01
 DEFAULT_ANGLE_ABS_TOL_DEG = 0.5
 
@@ -76,6 +77,7 @@ class PartSpec:
     mistakes: tuple[MistakeSpec, ...] = ()
     uses: tuple[str, ...] = ()
     choices: tuple[str, ...] = ()
+    angle: str = ""  # polar answers: the step holding the angle (the magnitude is `answer`)
 
 
 @dataclass(frozen=True)

@@ -85,6 +85,8 @@ def check_variant(variant: Variant) -> list[str]:
             problems.append(f"part {part.id}: answer {value!r} is not a finite number")
         if part.type == "integer" and not isinstance(value, int):
             problems.append(f"part {part.id}: answer {value!r} is not a whole number")
+        if part.type == "polar" and not (math.isfinite(value.magnitude) and math.isfinite(value.angle_deg)):
+            problems.append(f"part {part.id}: answer {value!r} is not finite")
         if part.type == "choice" and value not in part.choices:
             problems.append(f"part {part.id}: answer {value!r} is not one of {part.choices}")
     problems += _check_ecf_identity(variant)
@@ -134,6 +136,10 @@ def _check_mistakes(template: Template, variants: list[Variant], report: Report)
 
 
 def _coincides(answer, mistake, part) -> bool:
+    from graders.checks import for_part
+
+    if part.type == "polar":
+        return for_part(part)(mistake, answer)
     if isinstance(answer, float) and isinstance(mistake, (int, float)):
         return math.isclose(answer, mistake, rel_tol=max(part.tol.rel, 1e-9), abs_tol=part.tol.abs)
     return answer == mistake

@@ -42,6 +42,27 @@ class ParamValue:
 
 
 @dataclass(frozen=True)
+class Polar:
+    """A magnitude at an angle (a balancing mass-radius, a force with its direction).
+
+    Normalised so the magnitude is not negative and the angle (degrees) is in [0, 360):
+    "remove m at θ" is the same answer as "add m at θ + 180°".
+    """
+
+    magnitude: float
+    angle_deg: float
+
+    @classmethod
+    def of(cls, magnitude: float, angle_deg: float) -> "Polar":
+        if magnitude < 0:
+            magnitude, angle_deg = -magnitude, angle_deg + 180.0
+        return cls(magnitude, angle_deg % 360.0)
+
+    def text(self, unit: str) -> str:
+        return f"{units.format_quantity(self.magnitude, unit)} at {units.format_quantity(self.angle_deg, 'deg')}"
+
+
+@dataclass(frozen=True)
 class Answer:
     """The expected answer of a part, in the unit the sheet asks for."""
 
@@ -54,6 +75,8 @@ class Answer:
     def text(self) -> str:
         if isinstance(self.value, float):
             return units.format_quantity(self.value, self.part.unit)
+        if isinstance(self.value, Polar):
+            return self.value.text(self.part.unit)
         return f"{self.value} {units.pretty_unit(self.part.unit)}".strip()
 
 
@@ -145,6 +168,10 @@ def answer_for(part: PartSpec, derivation: Derivation) -> Answer:
         raise ExgenError(f"{part.answer!r} (answer of part {part.id}) is not a step the solver records")
     step = derivation[part.answer]
     value = step.value
+    if part.type == "polar":
+        if part.angle not in derivation:
+            raise ExgenError(f"{part.angle!r} (angle of part {part.id}) is not a step the solver records")
+        return Answer(part, _polar(part, derivation, value, derivation[part.angle].value), step.value, step)
     if part.type in ("number", "angle"):
         if not (isinstance(value, (int, float)) and math.isfinite(value)):
             raise InvalidDraw(f"part {part.id}: answer {value!r} is not a finite number")
@@ -152,8 +179,28 @@ def answer_for(part: PartSpec, derivation: Derivation) -> Answer:
     return Answer(part, value, step.value, step)
 
 
+def _polar(part: PartSpec, derivation: Derivation, magnitude, angle) -> Polar:
+    """A polar answer in the asked unit, from SI magnitude and angle (rad)."""
+    if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in (magnitude, angle)):
+        raise InvalidDraw(f"part {part.id}: answer {magnitude!r} at {angle!r} is not finite")
+    size = units.convert(float(magnitude), derivation[part.answer].unit, part.unit)
+    return Polar.of(size, units.convert(float(angle), derivation[part.angle].unit, "deg"))
+
+
 def mistakes_for(part: PartSpec, derivation: Derivation) -> dict[str, Any]:
-    """Mistake values recorded on the answer's step, in the asked unit."""
+    """Mistake values recorded on the answer's step (for a polar answer, also on its angle step),
+    in the asked unit. A polar mistake recorded on one step keeps the right value of the other."""
+    if part.type == "polar":
+        sizes = derivation.mistakes.get(part.answer, {})
+        angles = derivation.mistakes.get(part.angle, {})
+        right_size, right_angle = derivation[part.answer].value, derivation[part.angle].value
+        out = {}
+        for name in {**sizes, **angles}:
+            try:
+                out[name] = _polar(part, derivation, sizes.get(name, right_size), angles.get(name, right_angle))
+            except InvalidDraw:
+                continue
+        return out
     found = derivation.mistakes.get(part.answer, {})
     step_unit = derivation[part.answer].unit
     out = {}

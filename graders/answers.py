@@ -110,6 +110,8 @@ def _unit_hint(part) -> str:
         return "one of: " + ", ".join(part.choices)
     if part.type == "integer":
         return f"whole number{' of ' + part.unit if part.unit else ''}"
+    if part.type == "polar":
+        return f"{part.unit or 'size'} at deg, e.g. 1.5 {part.unit} at 218 deg"
     return part.unit or "pure number"
 
 

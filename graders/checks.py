@@ -6,6 +6,8 @@ None of them reads text or knows about parts: `graders.grade` picks one by the p
 from __future__ import annotations
 
 import math
+from functools import lru_cache
+from importlib import resources
 from typing import Any, Callable, Mapping
 
 from exgen import units
@@ -53,6 +55,12 @@ def angle(given_deg: float, expected_deg: float, rel: float = 0.0, abs_tol: floa
     return gap <= max(abs_tol, rel * abs(expected_deg))
 
 
+def polar(given, expected, rel: float = REL_TOL, abs_deg: float = ANGLE_ABS_TOL_DEG) -> bool:
+    """A magnitude at an angle: the magnitude within `rel`, the direction within `abs_deg` modulo a turn.
+    Both are normalised (exgen.variant.Polar), so "remove m at θ" equals "add m at θ + 180°"."""
+    return numeric(given.magnitude, expected.magnitude, rel) and angle(given.angle_deg, expected.angle_deg, 0.0, abs_deg)
+
+
 def integer(given: float, expected: float) -> bool:
     """Exactly the expected whole number ("4" and "4.0" are 4; "3.99" is not)."""
     return math.isfinite(given) and float(given) == float(expected) and float(given).is_integer()
@@ -61,6 +69,14 @@ def integer(given: float, expected: float) -> bool:
 def canonical(name: str) -> str:
     """'Crossed belt', 'crossed-belt' and ' CROSSED_belt ' all read as 'crossed belt'."""
     return " ".join(str(name).replace("-", " ").replace("_", " ").lower().split())
+
+
+@lru_cache(maxsize=1)
+def choice_aliases() -> dict[str, str]:
+    """Other words for the choices templates use ("ccw" for counter-clockwise), from exgen's data."""
+    text = resources.files("exgen").joinpath("data/choice_aliases.txt").read_text("utf-8")
+    pairs = (line.split("=", 1) for line in text.splitlines() if line.strip() and not line.startswith("#"))
+    return {a.strip(): b.strip() for a, b in pairs}
 
 
 def choice(given: str, expected: str, aliases: Mapping[str, str] | None = None) -> bool:
@@ -78,7 +94,9 @@ def for_part(part, widen: float = 1.0) -> Callable[[Any, Any], bool]:
     if part.type == "integer":
         return integer
     if part.type == "choice":
-        return lambda given, expected: choice(str(given), str(expected))
+        return lambda given, expected: choice(str(given), str(expected), choice_aliases())
+    if part.type == "polar":
+        return lambda given, expected: polar(given, expected, tol.rel * widen, tol.abs * widen)
     if part.type == "angle":
         to_deg = units.convert(1.0, part.unit, "deg") if part.unit else 1.0
         return lambda given, expected: angle(given * to_deg, expected * to_deg, tol.rel * widen, tol.abs * widen)

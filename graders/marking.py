@@ -14,7 +14,7 @@ from exgen.assignment import Question
 from exgen.derivation import Derivation
 from exgen.errors import DimensionError, ExgenError, QuantityError
 from exgen.template import PartSpec
-from exgen.variant import Answer, answer_for, mistakes_for, rerun
+from exgen.variant import Answer, Polar, answer_for, mistakes_for, rerun
 
 from . import checks
 from .mistakes import CLOSE_FACTOR, generic_mistake, template_mistake, tolerance_text
@@ -167,6 +167,8 @@ def _format_problem(part: PartSpec, reason: str) -> str:
     reason = reason.rstrip(".")
     if part.type == "choice":
         return CHOICE_FORMAT.format(reason=reason, choices=", ".join(part.choices))
+    if part.type == "polar":
+        return FORMAT_PROBLEM.format(reason=reason, example=Polar(12.5, 30.0).text(part.unit))
     example = units.format_quantity(12.5, part.unit, 3) if part.type != "integer" else "4"
     return FORMAT_PROBLEM.format(reason=reason, example=example)
 

@@ -122,11 +122,30 @@ PREMATURE_ROUNDING = ("Close ({off} off), but outside the {tol} tolerance. If yo
                       "too early is the likely cause: keep at least four significant figures in intermediate results.")
 
 
+OPPOSITE_SIDE = ("That direction is exactly opposite the right one. To add balancing mass, put it at the "
+                 "angle found; half a turn away is where mass would be removed (write \"remove ... at ...\" "
+                 "if that is what you mean).")
+OPPOSITE_DIRECTION = "That direction is exactly opposite (180° from) the right one: check the sign of each component."
+MIRRORED_ANGLE = ("Your angle is the mirror image of the right one: it is measured in the opposite sense. "
+                  "Measure angles as the sheet says (from where, and which way round).")
+WRONG_AXIS = ("Your angle is measured from the wrong reference line (a quarter turn out). "
+              "The sheet says where 0° is and which way angles are measured.")
+MAGNITUDE_ONLY = "The magnitude is right; the angle is not."
+ANGLE_ONLY = "The angle is right; the magnitude is not."
+
+
 def generic_mistake(part: PartSpec, given: Given, expected: float, matches: Matcher,
                     near: Matcher) -> Mistake | None:
     """The first generic slip that explains a wrong number (`near` is the part's widened comparator)."""
+    if part.type == "polar":
+        return _polar_slip(part, given.value, expected)
     if part.type not in ("number", "angle") or not isinstance(expected, (int, float)):
         return None
+    if part.type == "angle":
+        found = _direction_slip(given.value, units.convert(expected, part.unit, "deg") if part.unit else expected,
+                                part, OPPOSITE_DIRECTION)
+        if found:
+            return found
     for detect in (_unit_confused, _wrong_prefix, _percent_fraction, _wrong_sign):
         try:
             found = detect(part, given, float(expected), matches)
@@ -138,6 +157,35 @@ def generic_mistake(part: PartSpec, given: Given, expected: float, matches: Matc
         return Mistake("premature_rounding", PREMATURE_ROUNDING.format(
             off=_percent(abs(given.value - expected) / abs(expected)) if expected else "slightly",
             tol=tolerance_text(part)))
+    return None
+
+
+def _direction_slip(given_deg, expected_deg, part: PartSpec, opposite: str,
+                    scale: float = 1.0) -> Mistake | None:
+    """An angle half a turn out, mirrored (measured the other way round), or a quarter turn out
+    or measured from the other axis (90° - θ)."""
+    if part.type == "angle" and part.unit:
+        given_deg = units.convert(given_deg, part.unit, "deg")
+    tol = max(part.tol.abs, 0.5)
+    same = lambda a, b: checks.angle(a, b, 0.0, tol)  # noqa: E731
+    if same(given_deg, expected_deg + 180):
+        return Mistake("opposite_side", opposite)
+    if not same(expected_deg, -expected_deg) and same(given_deg, -expected_deg):
+        return Mistake("mirrored_angle", MIRRORED_ANGLE)
+    if any(same(given_deg, e) for e in (expected_deg + 90, expected_deg - 90, 90 - expected_deg)):
+        return Mistake("wrong_axis", WRONG_AXIS)
+    return None
+
+
+def _polar_slip(part: PartSpec, given, expected) -> Mistake | None:
+    """Which half of a magnitude-at-angle answer is wrong, and why the angle might be."""
+    size_right = checks.numeric(given.magnitude, expected.magnitude, part.tol.rel)
+    angle_right = checks.angle(given.angle_deg, expected.angle_deg, 0.0, part.tol.abs)
+    if size_right and not angle_right:
+        return _direction_slip(given.angle_deg, expected.angle_deg, part, OPPOSITE_SIDE) or \
+            Mistake("angle_wrong", MAGNITUDE_ONLY)
+    if angle_right and not size_right:
+        return Mistake("magnitude_wrong", ANGLE_ONLY)
     return None
 
 
@@ -202,6 +250,8 @@ def _percent(fraction: float) -> str:
 def tolerance_text(part: PartSpec) -> str:
     """"1 %", "3 significant figures" or "0.5°": the tolerance as a student reads it."""
     tol = part.tol
+    if part.type == "polar":
+        return f"{100 * tol.rel:g} % in size and {units.format_quantity(tol.abs, 'deg')} in angle"
     if tol.sig:
         return f"{tol.sig} significant figures"
     if tol.rel:

@@ -13,10 +13,13 @@ from dataclasses import dataclass
 from exgen import units
 from exgen.errors import DimensionError, QuantityError
 from exgen.template import PartSpec
+from exgen.variant import Polar
 
 _DEGREE_SIGNS = re.compile(r"\s*[\u00b0\u00ba\u02da](?![CF])")
 _WORDS_BLANK = ("", "~", "null", "none", "-")
 NUMERIC_TYPES = ("number", "angle", "integer")
+_POLAR = re.compile(r"(?:(add|remove|subtract|take away)\s+)?(.+?)\s*(?:\bat\b|@|\u2220|<)\s*(.+)", re.IGNORECASE)
+_REMOVE = ("remove", "subtract", "take away")
 
 
 @dataclass(frozen=True)
@@ -53,19 +56,41 @@ def read_answer(text: str, part: PartSpec) -> Given:
     """The answer to `part` in its asked unit; QuantityError if unreadable, DimensionError if of the wrong kind."""
     if part.type == "choice":
         return Given(text, " ".join(text.split()))
+    if part.type == "polar":
+        return _read_polar(text, part)
+    reading, value = _in_unit(text, part.unit)
+    return Given(text, value, reading.value, reading.unit)
+
+
+def _in_unit(text: str, unit: str) -> tuple[units.Reading, float]:
+    """One quantity, converted to `unit` (a bare number is already in it)."""
     reading = read_quantity(text)
     if reading.unit is None:
         value = reading.value
     else:
         try:
-            value = units.convert(reading.value, reading.unit, part.unit)
+            value = units.convert(reading.value, reading.unit, unit)
         except (DimensionError, QuantityError):
             raise
         except Exception as exc:  # a unit pint parsed but cannot convert
             raise QuantityError(f"cannot read the unit in {text.strip()!r}") from exc
     if not math.isfinite(value):
         raise QuantityError(f"{text.strip()!r} is not a finite number")
-    return Given(text, value, reading.value, reading.unit)
+    return reading, value
+
+
+def _read_polar(text: str, part: PartSpec) -> Given:
+    """"0.85 kg m at 218 deg", "remove 0.85 @ 38°", "0.85∠218": a magnitude at an angle (deg if bare)."""
+    match = _POLAR.fullmatch(text.strip())
+    if not match:
+        raise QuantityError(f"cannot read {text.strip()!r} as a magnitude at an angle, such as "
+                            f"\"{Polar(12.5, 30.0).text(part.unit)}\"")
+    action, size_text, angle_text = match.groups()
+    size_reading, size = _in_unit(size_text, part.unit)
+    _, angle_deg = _in_unit(angle_text, "deg")
+    if action and action.lower() in _REMOVE:
+        size = -size
+    return Given(text, Polar.of(size, angle_deg), size_reading.value, size_reading.unit)
 
 
 def kind_of(unit: str) -> str:

@@ -35,6 +35,8 @@ def ask_hint(part) -> str:
         return "one of: " + ", ".join(part.choices)
     if part.type == "integer":
         return "a whole number" + (f", in {asked_unit(part)}" if part.unit else "")
+    if part.type == "polar":
+        return f"{asked_unit(part) or 'magnitude'} at an angle in degrees"
     return f"answer in {asked_unit(part)}" if part.unit else "a pure number"
 
 
@@ -42,6 +44,8 @@ def tolerance_text(part) -> str:
     if part.type in ("integer", "choice"):
         return "exact"
     tol, pieces = part.tol, []
+    if part.type == "polar":
+        return f"±{tol.rel * 100:g} %, angle ±{PLAIN.quantity(tol.abs, 'deg')}"
     if tol.rel:
         pieces.append(f"±{tol.rel * 100:g} %")
     if tol.abs:

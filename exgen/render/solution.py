@@ -116,9 +116,13 @@ def work_lines(variant) -> tuple[WorkLine, ...]:
     answered: dict[str, list[str]] = {}
     for part in variant.template.parts:
         answered.setdefault(part.answer, []).append(part.id)
+        if part.angle:
+            answered.setdefault(part.angle, []).append(part.id)
     lines = []
     for step in variant.steps:
         formula = expand(step.formula, symbol_of) if step.formula else ""
+        if formula.replace("\\,", "").replace(" ", "") == step.symbol.replace(" ", ""):
+            formula = ""  # "m_1 r_1 = m_1 r_1" says nothing
         substituted = ""
         if step.formula and PLACEHOLDER.search(step.formula) and not _ONLY_PLACEHOLDER.match(step.formula):
             substituted = expand(step.formula, symbol_of, value_of, MARKDOWN.number)
@@ -129,7 +133,10 @@ def work_lines(variant) -> tuple[WorkLine, ...]:
         for part_id in parts:
             answer = variant.answers[part_id]
             entry = (answer.value, answer.part.unit)
-            if isinstance(answer.value, float) and answer.part.unit != step.unit and entry not in asked:
+            if answer.part.type == "polar":
+                entry = ((answer.value.angle_deg, "deg") if step.name == answer.part.angle
+                         else (answer.value.magnitude, answer.part.unit))
+            if isinstance(entry[0], float) and entry[1] != step.unit and entry not in asked:
                 asked.append(entry)
         lines.append(WorkLine(step.name, step.symbol, formula, substituted, step.value, step.unit, step.note,
                               parts, tuple(asked)))

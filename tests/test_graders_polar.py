@@ -1,0 +1,71 @@
+"""Answers that are a magnitude at an angle: equivalent angles, add or remove, and which half is wrong."""
+import pytest
+
+from exgen.variant import make_variant
+from graders.grade import grade_variant
+
+
+@pytest.fixture(scope="module")
+def variant(bank):
+    return make_variant(bank.get("balancing.static_balance"), 4)  # 572.9 kg mm at 48.00 deg
+
+
+def grade(variant, text):
+    return next(r for r in grade_variant(variant, {"a": text}).parts if r.part_id == "a")
+
+
+@pytest.mark.parametrize("text", [
+    "572.9 kg mm at 48 deg", "572.9 kg·mm at 48°", "0.5729 kg m @ 48", "572.9 at 48.3", "572.9∠48",
+    "572.9 at -312", "572.9 at 408 deg", "remove 572.9 at 228", "Remove 572.9 kg mm at 228°", "-572.9 at 228",
+    "572.9 at 0.8378 rad",
+])
+def test_equivalent_answers_are_right(variant, text):
+    assert variant.answers["a"].text == "572.9 kg\u00b7mm at 48.00\u00b0"
+    result = grade(variant, text)
+    assert result.status == "correct", result.message
+
+
+@pytest.mark.parametrize("text, mistake, words", [
+    ("572.9 at 228", "resultant_not_balance", "goes opposite it"),  # the template names it first
+    ("572.9 at 312", "mirrored_angle", "mirror image"),
+    ("572.9 at 42", "wrong_axis", "wrong reference line"),
+    ("572.9 at 138", "wrong_axis", "wrong reference line"),
+    ("572.9 at 100", "angle_wrong", "magnitude is right"),
+    ("600 at 48", "magnitude_wrong", "angle is right"),
+])
+def test_wrong_halves_are_named(variant, text, mistake, words):
+    result = grade(variant, text)
+    assert result.status == "wrong" and result.mistake == mistake and words in result.message
+
+
+def test_scalar_sum_is_named(variant):
+    total = sum(m * r for m, r in ((3.5, 100), (6, 110), (5.5, 160)))  # kg mm, added as numbers
+    result = grade(variant, f"{total} at 48")
+    assert result.mistake == "scalar_sum"
+
+
+@pytest.mark.parametrize("text", ["572.9", "at 48", "572.9 at", "572.9 kg at 48", "572.9 at 48 m"])
+def test_incomplete_or_wrong_kind(variant, text):
+    result = grade(variant, text)
+    assert result.points == 0 and result.status in ("unreadable", "wrong")
+
+
+def test_half_a_turn_out_is_named_generically_when_no_template_mistake_explains_it(variant):
+    from graders.checks import for_part
+    from graders.mistakes import generic_mistake
+    from graders.reading import read_answer
+
+    part = variant.template.part("a")
+    found = generic_mistake(part, read_answer("572.9 at 228", part), variant.answers["a"].value,
+                            for_part(part), for_part(part, 3))
+    assert found.name == "opposite_side" and "remove" in found.message
+
+
+@pytest.mark.parametrize("given, expected", [
+    ("CCW", "counter-clockwise"), ("anti-clockwise", "counter-clockwise"), ("cw", "clockwise"),
+    ("Unbalanced", "not balanced"), ("Counter Clockwise", "counter-clockwise"),
+])
+def test_choice_aliases(given, expected):
+    from graders.checks import choice, choice_aliases
+
+    assert choice(given, expected, choice_aliases())
