@@ -1,0 +1,275 @@
+"""Worked derivations for balancing reciprocating engines (course text §2.3, Examples 2.6-2.9).
+
+In-line engines follow the text's table: each crank's m·r·ω² at θ (primary) and m·r·ω²/n at
+2θ (secondary), with its signed distance x from the centre plane for the couples. Radial and V
+engines use direct and reverse cranks. Many engines cancel some of these exactly, so a known
+slip is recorded only where it changes the answer a student would give.
+"""
+from __future__ import annotations
+
+import math
+
+from ..mechanics import engines as me
+from .polygons import APART, closing_angle, components, magnitude_formula, require_polar_apart
+
+PI = math.pi
+#: Forces and couples that are exactly zero are graded within this (N, or N·m).
+ZERO_TOL = 0.5
+
+
+def record(d, step: str, mistake: str, value: float, right: float) -> None:
+    """Record a mistake only where it changes the answer beyond the grading tolerance."""
+    if abs(value - right) > max(ZERO_TOL, APART * abs(right)):
+        d.mistake(step, mistake, value)
+
+
+def _speed_and_ratio(d, p, radius_name: str):
+    n = d.step("n", p.l / d.value_of(radius_name), "", symbol="n", formula=rf"\frac{{@l}}{{@{radius_name}}}",
+               note="connecting rod to crank ratio")
+    d.require(3.0 <= n <= 6.0, "an unusual rod-to-crank ratio")
+    return n
+
+
+def _crank_polygons(d, p, names, positions, pitch_name="a"):
+    """Primary and secondary forces and couples of in-line cranks at angle steps/params `names`."""
+    unit = d.step("F1", p.m * p.r * p.N ** 2, "N", symbol=r"m r \omega^2", formula=r"@m\,@r\,@N^2",
+                  note="each crank's primary force")
+    n = _speed_and_ratio(d, p, "r")
+    unit2 = d.step("F2", unit / n, "N", symbol=r"\frac{m r \omega^2}{n}", formula=r"\frac{@F1}{@n}",
+                   note="each crank's secondary force")
+    for i, x in enumerate(positions, start=1):
+        coef = x / getattr(p, pitch_name)
+        d.step(f"x{i}", x, "m", symbol=f"x_{i}", formula=rf"{coef:g}\,@{pitch_name}",
+               note="from the centre plane, positive towards the last cylinder" if i == 1 else "")
+        d.step(f"C{i}", unit * x, "N*m", symbol=rf"m r \omega^2 x_{i}", formula=rf"@F1\,@x{i}")
+        d.step(f"D{i}", unit2 * x, "N*m", symbol=rf"\frac{{m r \omega^2}}{{n}} x_{i}", formula=rf"@F2\,@x{i}")
+    count = len(names)
+    results = {}
+    for tag, size, harmonic, what in (("Fp", "F1", 1, "primary forces"), ("Cp", "C", 1, "primary couples"),
+                                      ("Fs", "F2", 2, "secondary forces"), ("Cs", "D", 2, "secondary couples")):
+        sizes = [size] * count if size.startswith("F") else [f"{size}{i}" for i in range(1, count + 1)]
+        x, y = components(d, tag, tag[0] + r"_{\mathrm{" + tag[1] + "}}", list(zip(sizes, names)),
+                          "N" if tag[0] == "F" else "N*m", what, harmonic)
+        symbol = {"Fp": r"F_{\mathrm{p}}", "Cp": r"C_{\mathrm{p}}", "Fs": r"F_{\mathrm{s}}", "Cs": r"C_{\mathrm{s}}"}[tag]
+        results[tag] = d.step(tag, math.hypot(x, y), "N" if tag[0] == "F" else "N*m", symbol=symbol,
+                              formula=magnitude_formula(f"{tag}_0", f"{tag}_90"),
+                              note=f"the largest unbalanced {what[:-1]}")
+    return results
+
+
+def _inline_slips(d, p, angles, positions, results, angle_steps: bool):
+    """Known slips: rpm as rad/s, n inverted, the secondary angle not doubled, couples about an end."""
+    omega, rpm = p.N, p.N * 60 / (2 * PI)
+    n = p.l / p.r
+    for tag in ("Fp", "Cp", "Fs", "Cs"):
+        record(d, tag, "rpm_as_rad_s", results[tag] * (rpm / omega) ** 2, results[tag])
+    for tag in ("Fs", "Cs"):
+        record(d, tag, "n_inverted", results[tag] * n ** 2, results[tag])
+    undoubled = me.inline_unbalance(p.m, p.r, n, omega, angles, positions, 1)
+    for tag, (size, angle) in zip(("Fs", "Cs"), undoubled):
+        wrong = size / n
+        if angle_steps:
+            record(d, tag, "secondary_not_doubled", wrong, results[tag])
+        else:
+            d.mistake(tag, "secondary_not_doubled", wrong)
+            d.mistake(f"theta_{tag}", "secondary_not_doubled", angle + PI)
+
+
+def inline_engine_unbalance(p, d):
+    """Example 2.6: four cranks at given angles; the forces and couples needed to balance the engine."""
+    names = [f"theta{i}" for i in range(1, 5)]
+    angles = [getattr(p, name) for name in names]
+    positions = me.centred_positions(4, p.a)
+    results = _crank_polygons(d, p, names, positions)
+    for tag in ("Fp", "Cp", "Fs", "Cs"):
+        closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", f"{tag}_0", f"{tag}_90")
+        scale = 4 * d.value_of("F1") * (1 if tag[1] == "p" else 1 / d.value_of("n"))
+        scale *= 1 if tag[0] == "F" else p.a
+        d.require(results[tag] >= 0.15 * scale, f"the engine nearly balances its {tag}: no direction to ask")
+        d.mistake(f"theta_{tag}", "resultant_not_balance", d.value_of(f"theta_{tag}") + PI)
+    _inline_slips(d, p, angles, positions, results, angle_steps=False)
+    n = p.l / p.r
+    for harmonic, tag in ((1, "Cp"), (2, "Cs")):
+        right = (results[tag], d.value_of(f"theta_{tag}"))
+        # couples about cylinder 1's plane instead of the centre plane
+        shifted = [x - positions[0] for x in positions]
+        _, (size, angle) = me.inline_unbalance(p.m, p.r, n, p.N, angles, shifted, harmonic)
+        require_polar_apart(d, right, (size, angle + PI), "the reference plane")
+        d.mistake(tag, "couple_about_end_plane", size)
+        d.mistake(f"theta_{tag}", "couple_about_end_plane", angle + PI)
+        # every distance taken as positive
+        _, (size, angle) = me.inline_unbalance(p.m, p.r, n, p.N, angles, [abs(x) for x in positions], harmonic)
+        require_polar_apart(d, right, (size, angle + PI), "the sign of the distances")
+        d.mistake(tag, "sign_lost", size)
+        d.mistake(f"theta_{tag}", "sign_lost", angle + PI)
+
+
+def inline_engine_firing(p, d):
+    """Example 2.7, Problem 2.4(a): crank angles from the firing order; is the engine balanced?"""
+    order = me.parse_firing_order(p.firing)
+    count, strokes = len(order), int(p.strokes)
+    interval = d.step("delta", strokes * PI / count, "rad", symbol=r"\Delta\theta",
+                      formula=rf"\frac{{{strokes * 180}^\circ}}{{{count}}}",
+                      note=f"cranks of a {strokes}-stroke engine are spaced {strokes * 180}°/N in firing order")
+    angles = me.crank_angles(order, strokes)
+    for k, cylinder in enumerate(order):
+        d.step(f"theta{cylinder}", angles[cylinder], "rad", symbol=f"\\theta_{cylinder}",
+               formula=rf"{k}\,@delta" if k > 1 else ("@delta" if k == 1 else "0"),
+               note=f"cylinder {cylinder} fires {_ordinal(k + 1)}")
+    names = [f"theta{i}" for i in range(1, count + 1)]
+    ordered = [angles[i] for i in range(1, count + 1)]
+    positions = me.centred_positions(count, p.a)
+    results = _crank_polygons(d, p, names, positions)
+    balanced = all(results[tag] <= ZERO_TOL for tag in ("Fp", "Cp", "Fs", "Cs"))
+    d.step("verdict", "balanced" if balanced else "not balanced", "", symbol=r"\text{engine}",
+           note="balanced only if all four polygons close")
+    _inline_slips(d, p, ordered, positions, results, angle_steps=True)
+    other = me.crank_angles(order, 6 - strokes)
+    wrong = me.inline_unbalance(p.m, p.r, p.l / p.r, p.N, [other[i] for i in range(1, count + 1)], positions, 1) + \
+        me.inline_unbalance(p.m, p.r, p.l / p.r, p.N, [other[i] for i in range(1, count + 1)], positions, 2)
+    for tag, (size, _) in zip(("Fp", "Cp", "Fs", "Cs"), wrong):
+        record(d, tag, "interval_wrong", size, results[tag])
+    primary_only = results["Fp"] <= ZERO_TOL and results["Cp"] <= ZERO_TOL
+    if primary_only and not balanced:
+        d.mistake("verdict", "secondary_ignored", "balanced")
+
+
+def _ordinal(k: int) -> str:
+    return f"{k}{'st' if k == 1 else 'nd' if k == 2 else 'rd' if k == 3 else 'th'}"
+
+
+def inline_primary_balance(p, d):
+    """Problem 2.1: outer cranks A and D given; the masses and angles of B and C for primary balance,
+    then the largest secondary force."""
+    from .balancing import FAR_SIDE, _plane
+
+    for tag, value, formula, note in (("A", -p.lAB, r"-@lAB", FAR_SIDE), ("D", p.lBC + p.lCD, r"@lBC + @lCD", "")):
+        _plane(d, tag, "m_out", "r", value, formula, note)
+    mx, my = components(d, "M", "M", [("mrlA", None), ("mrlD", "phi")], "kg*m^2", "moments about B (angles from A)")
+    mrl_c = d.step("mrlC", math.hypot(mx, my), "kg*m^2", symbol=r"m_C r\,l_C", formula=magnitude_formula("M_0", "M_90"),
+                   note="C closes the moment polygon about B")
+    m_c = d.step("mC", mrl_c / (p.r * p.lBC), "kg", symbol=r"m_C", formula=r"\frac{@mrlC}{@r\,@lBC}")
+    theta_c = closing_angle(d, "theta_C", r"\theta_C", "M_0", "M_90")
+    d.step("mrC", m_c * p.r, "kg*m", symbol=r"m_C r", formula=r"@mC\,@r")
+    fx, fy = components(d, "F", "F", [("mrA", None), ("mrC", "theta_C"), ("mrD", "phi")], "kg*m", "primary forces")
+    m_b = d.step("mB", math.hypot(fx, fy) / p.r, "kg", symbol=r"m_B",
+                 formula=rf"\frac{{{magnitude_formula('F_0', 'F_90')}}}{{@r}}", note="B closes the force polygon")
+    theta_b = closing_angle(d, "theta_B", r"\theta_B", "F_0", "F_90")
+    d.require(1.0 <= min(m_b, m_c) and max(m_b, m_c) <= 40.0, "an unrealistic inner mass")
+
+    n = _speed_and_ratio(d, p, "r")
+    k = d.step("k2", p.r * p.N ** 2 / n, "m/s^2", symbol=r"\frac{r \omega^2}{n}", formula=r"\frac{@r\,@N^2}{@n}")
+    for tag, mass in (("A", "m_out"), ("B", "mB"), ("C", "mC"), ("D", "m_out")):
+        d.step(f"S{tag}", d.value_of(mass) * k, "N", symbol=rf"m_{tag} \frac{{r \omega^2}}{{n}}", formula=rf"@{mass}\,@k2")
+    sx, sy = components(d, "Fs", r"F_{\mathrm{s}}", [("SA", None), ("SB", "theta_B"), ("SC", "theta_C"), ("SD", "phi")],
+                        "N", "secondary forces (cranks at 2θ)", 2)
+    secondary = d.step("Fs", math.hypot(sx, sy), "N", symbol=r"F_{\mathrm{s}}", formula=magnitude_formula("Fs_0", "Fs_90"),
+                       note="the largest secondary unbalanced force")
+    d.require(secondary >= 0.1 * (2 * p.m_out + m_b + m_c) * k, "secondary forces nearly balance: no direction to ask")
+    theta_s = closing_angle(d, "theta_Fs", r"\theta_{F_{\mathrm{s}}}", "Fs_0", "Fs_90", opposite=False)
+    _primary_balance_slips(p, d, (m_c, theta_c), (m_b, theta_b), (secondary, theta_s), n)
+
+
+def _primary_balance_slips(p, d, right_c, right_b, right_s, n):
+    from ..mechanics import balancing as mb
+
+    lost = mb.balancing_vector([(p.m_out * p.lAB, 0.0), (p.m_out * (p.lBC + p.lCD), p.phi)])
+    wrong_c = (lost[0] / p.lBC, lost[1])
+    wrong_b = mb.balancing_vector([(p.m_out, 0.0), (p.m_out, p.phi), wrong_c])
+    for tag, right, wrong in (("C", right_c, wrong_c), ("B", right_b, wrong_b)):
+        require_polar_apart(d, right, wrong, "the sign of A's distance")
+        d.mistake(f"m{tag}", "sign_lost", wrong[0])
+        d.mistake(f"theta_{tag}", "sign_lost", wrong[1])
+        d.mistake(f"theta_{tag}", "resultant_not_balance", right[1] + PI)
+    rows = [(p.m_out, 0.0), (right_b[0], right_b[1]), (right_c[0], right_c[1]), (p.m_out, p.phi)]
+    k = p.r * p.N ** 2 / n
+    single = mb.polar(*mb.vector_sum((m * k, a) for m, a in rows))
+    require_polar_apart(d, right_s, single, "doubling the crank angles")
+    d.mistake("Fs", "secondary_not_doubled", single[0])
+    d.mistake("theta_Fs", "secondary_not_doubled", single[1])
+    d.mistake("Fs", "n_inverted", right_s[0] * n ** 2)
+    d.mistake("Fs", "rpm_as_rad_s", right_s[0] * (60 / (2 * PI)) ** 2)
+    d.mistake("theta_Fs", "balance_direction", right_s[1] + PI)
+
+
+CRANKS = (
+    ("P_dir", "Fc", "primary direct cranks, all along the crank", lambda a: 0.0),
+    ("P_rev", "Fc", "primary reverse cranks, at 2α", lambda a: 2 * a),
+    ("S_dir", "Fc2", "secondary direct cranks, at −α", lambda a: -a),
+    ("S_rev", "Fc2", "secondary reverse cranks, at 3α", lambda a: 3 * a),
+)
+SYMBOLS = {"P_dir": r"F_{\mathrm{p,d}}", "P_rev": r"F_{\mathrm{p,r}}", "S_dir": r"F_{\mathrm{s,d}}",
+           "S_rev": r"F_{\mathrm{s,r}}"}
+
+
+def _degrees(angles) -> str:
+    return ", ".join(f"{math.degrees(a) % 360:.0f}°" for a in angles)
+
+
+def _direct_reverse(p, d, alphas, factor_formulas):
+    """The four resultants of direct and reverse cranks for cylinders on lines `alphas` (crank at θ = 0)."""
+    r = d.step("r", p.S / 2, "m", formula=r"\frac{@S}{2}", note="the crank radius is half the stroke")
+    n = _speed_and_ratio(d, p, "r")
+    d.step("Fc", me.crank_force(p.m, r, p.N), "N", symbol=r"\frac{m}{2} r \omega^2",
+           formula=r"\frac{@m}{2}\,@r\,@N^2", note="each primary direct or reverse crank carries half the mass")
+    d.step("Fc2", me.crank_force(p.m, r, p.N, n), "N", symbol=r"\frac{m}{2} (2\omega)^2 \frac{r}{4n}",
+           formula=r"\frac{@m}{2}\,(2\,@N)^2\,\frac{@r}{4\,@n}",
+           note="each secondary crank: length r/4n, turning at 2ω")
+    found = me.radial_cranks(alphas)
+    sums = {key: found[long] for key, long in zip(("P_dir", "P_rev", "S_dir", "S_rev"),
+                                                   ("primary_direct", "primary_reverse", "secondary_direct",
+                                                    "secondary_reverse"))}
+    out = {}
+    for key, crank, where, place in CRANKS:
+        d.step(f"k_{key}", sums[key][0], "", symbol=rf"k_{{\mathrm{{{key.replace('_', ',').lower()}}}}}",
+               formula=factor_formulas.get(key, ""),
+               note=f"{where}: {_degrees(place(a) for a in alphas)}; the length of their resultant, in cranks")
+        out[key] = d.step(key, sums[key][0] * d.value_of(crank), "N", symbol=SYMBOLS[key],
+                          formula=rf"@k_{key}\,@{crank}")
+    return out, sums, r, n
+
+
+def _crank_slips(p, d, out, sums, r, n, keys):
+    rpm_factor = (60 / (2 * PI)) ** 2
+    for key in keys:
+        right = out[key]
+        record(d, key, "rpm_as_rad_s", right * rpm_factor, right)
+        record(d, key, "stroke_for_radius", right * (2 if key.startswith("P") else 4), right)
+        if key.startswith("S"):
+            record(d, key, "n_inverted", right * n ** 2, right)
+            record(d, key, "secondary_speed_not_doubled", right / 4, right)
+
+
+def radial_engine(p, d):
+    """Example 2.8, Problems 2.3 and 2.4(b): a radial engine by direct and reverse cranks."""
+    count = int(p.ncyl)
+    alphas = me.radial_cylinder_angles(count)
+    out, sums, r, n = _direct_reverse(p, d, alphas, {"P_dir": r"@ncyl"})
+    d.step("Bb", count * p.m * r / 2, "kg*m", symbol=r"B\,b", formula=r"\frac{@ncyl\,@m\,@r}{2}",
+           note="a rotating mass opposite the crank balances the direct cranks, which turn with it")
+    secondary = d.step("S_max", out["S_dir"] + out["S_rev"], "N", symbol=r"F_{\mathrm{s,max}}",
+                       formula=r"@S_dir + @S_rev", note="largest when the direct and reverse resultants line up")
+    d.step("sec_verdict", "balanced" if secondary <= ZERO_TOL else "not balanced", "",
+           symbol=r"\text{secondary}", note="balanced only if both secondary polygons close")
+    rpm_factor = (60 / (2 * PI)) ** 2
+    for key in ("P_dir", "S_max"):
+        right = d.value_of(key)
+        record(d, key, "rpm_as_rad_s", right * rpm_factor, right)
+        record(d, key, "stroke_for_radius", right * (2 if key == "P_dir" else 4), right)
+    d.mistake("Bb", "stroke_for_radius", 2 * d.value_of("Bb"))
+    record(d, "S_max", "n_inverted", secondary * n ** 2, secondary)
+    record(d, "S_max", "secondary_speed_not_doubled", secondary / 4, secondary)
+    d.mistake("sec_verdict", "opposite", "not balanced" if secondary <= ZERO_TOL else "balanced")
+
+
+def v_engine(p, d):
+    """Example 2.9: a two-cylinder V engine on one crank, by direct and reverse cranks."""
+    formulas = {"P_dir": "2", "P_rev": r"2\left|\cos @V\right|", "S_dir": r"2\left|\cos\frac{@V}{2}\right|",
+                "S_rev": r"2\left|\cos\frac{3\,@V}{2}\right|"}
+    out, sums, r, n = _direct_reverse(p, d, me.v_cylinder_angles(p.V), formulas)
+    _crank_slips(p, d, out, sums, r, n, tuple(out))
+    half = p.V / 2
+    record(d, "P_rev", "angle_not_doubled", 2 * abs(math.cos(half)) * d.value_of("Fc"), out["P_rev"])
+    for a, b in (("P_dir", "P_rev"), ("S_dir", "S_rev")):
+        record(d, a, "direct_reverse_swapped", out[b], out[a])
+        record(d, b, "direct_reverse_swapped", out[a], out[b])
