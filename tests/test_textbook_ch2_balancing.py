@@ -182,18 +182,36 @@ def test_problem_2_1_primary_balance_by_inner_cranks(bank):
     assert polar_is(got["c"], math.hypot(sx, sy), math.degrees(math.atan2(sy, sx)) % 360)
 
 
-def test_problem_2_2_complete_balance_two_masses(bank):
-    # Problem 2.2: B 18 kg, C 12.5 kg at 60 mm; A and D at 80 mm; C 100 deg and A 90 deg from B;
-    # AB 100 mm, BC 200 mm. Moments about A: 108 at 0 + 225 at 100 deg; D closes them.
-    got, warnings = answers(bank, "balancing.complete_balance_masses", mB="18 kg", mC="12.5 kg", rBC="60 mm",
-                            rAD="80 mm", thetaC="100 deg", thetaA="90 deg", lAB="100 mm", lBC="200 mm")
+PROBLEM_2_2 = dict(mB="18 kg", mC="12.5 kg", rBC="60 mm", rAD="80 mm", thetaC="100 deg", lAB="100 mm", lBC="200 mm")
+
+
+def _problem_2_2_by_hand(theta_a_deg):
+    """Moments about A: B 108 at 0 and C 225 at 100 deg (kg mm m); D closes them. Then forces: A at
+    theta_a and D at theta_d close B (1080 at 0) and C (750 at 100 deg), solved by Cramer's rule."""
     c100, s100 = math.cos(math.radians(100)), math.sin(math.radians(100))
     mx, my = 108 + 225 * c100, 225 * s100
-    theta_d = math.atan2(-my, -mx)
-    assert got["a"] == pytest.approx(math.degrees(theta_d) % 360)  # 252.7 deg
-    fx, fy = 1080 + 750 * c100, 750 * s100                         # forces of B and C, kg mm
-    m_d = fx / (-80 * math.cos(theta_d))                           # A (at 90 deg) has no 0-deg component
-    m_a = (-fy - 80 * m_d * math.sin(theta_d)) / 80
-    assert got["b"] == pytest.approx(m_d) and got["c"] == pytest.approx(m_a)  # 39.97 kg, 28.93 kg
-    assert got["d"] == pytest.approx(math.hypot(mx, my) / (80 * m_d) * 1000)  # 72.6 mm: D lies between A and B
-    assert warnings == ["plane D too close to another plane"]      # 27 mm from B; drawn variants keep 40 mm
+    theta_d, theta_a = math.atan2(-my, -mx), math.radians(theta_a_deg)
+    tx, ty = -(1080 + 750 * c100), -750 * s100
+    det = math.cos(theta_a) * math.sin(theta_d) - math.cos(theta_d) * math.sin(theta_a)
+    m_a = (tx * math.sin(theta_d) - ty * math.cos(theta_d)) / det / 80
+    m_d = (math.cos(theta_a) * ty - math.sin(theta_a) * tx) / det / 80
+    return math.degrees(theta_d) % 360, m_d, m_a, math.hypot(mx, my) / (80 * m_d) * 1000
+
+
+def test_problem_2_2_complete_balance_two_masses(bank):
+    # Problem 2.2 as its source states it (Khurmi and Gupta; IAS 2004): A is 190 deg from B. D then lies
+    # 366.7 mm from A, beyond C, as the order A, B, C, D says.
+    got, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="190 deg", **PROBLEM_2_2)
+    expected = _problem_2_2_by_hand(190)
+    assert [got[k] for k in "abcd"] == pytest.approx(expected)
+    assert [round(x, 1) for x in expected] == [252.7, 7.9, 9.7, 366.7]
+    assert warnings == []
+
+
+def test_problem_2_2_as_printed_puts_d_out_of_order(bank):
+    # The course text prints 90 deg between B and A. The arithmetic still closes (D at 252.7 deg, 39.97 kg,
+    # A 28.93 kg), but D falls 72.6 mm from A, between A and B: the data contradict the order of the planes.
+    got, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="90 deg", **PROBLEM_2_2)
+    assert [got[k] for k in "abcd"] == pytest.approx(_problem_2_2_by_hand(90))
+    assert round(got["d"], 1) == 72.6
+    assert warnings == ["plane D does not lie beyond C, as the order A, B, C, D needs"]

@@ -151,8 +151,7 @@ def complete_balance_masses(p, d):
     d.require(1.0 <= min(m_a, m_d) and max(m_a, m_d) <= 60.0, "an unrealistic mass")
     l_d = d.step("lD", mrl_d / (m_d * p.rAD), "m", symbol=r"l_D", formula=r"\frac{@mrlD}{@mD\,@rAD}",
                  note="the distance from A to D")
-    planes = (0.0, p.lAB, p.lAB + p.lBC)
-    d.require(min(abs(l_d - z) for z in planes) >= 0.04 and l_d <= 2.0, "plane D too close to another plane")
+    d.require(p.lAB + p.lBC + 0.05 <= l_d <= 2.0, "plane D does not lie beyond C, as the order A, B, C, D needs")
 
     # every eccentricity taken as equal (masses used for m·r): θ_D is unchanged, the masses are not
     ratio = p.rBC / p.rAD

@@ -30,8 +30,9 @@ def _speed_and_ratio(d, p, radius_name: str):
     return n
 
 
-def _crank_polygons(d, p, names, positions, pitch_name="a"):
-    """Primary and secondary forces and couples of in-line cranks at angle steps/params `names`."""
+def _crank_polygons(d, p, names, positions, with_angles: bool = False, pitch_name: str = "a"):
+    """Primary and secondary forces and couples of in-line cranks at angle steps/params `names`;
+    with `with_angles`, each followed by the angle of the vector that balances it."""
     unit = d.step("F1", p.m * p.r * p.N ** 2, "N", symbol=r"m r \omega^2", formula=r"@m\,@r\,@N^2",
                   note="each crank's primary force")
     n = _speed_and_ratio(d, p, "r")
@@ -54,6 +55,8 @@ def _crank_polygons(d, p, names, positions, pitch_name="a"):
         results[tag] = d.step(tag, math.hypot(x, y), "N" if tag[0] == "F" else "N*m", symbol=symbol,
                               formula=magnitude_formula(f"{tag}_0", f"{tag}_90"),
                               note=f"the largest unbalanced {what[:-1]}")
+        if with_angles:
+            closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", f"{tag}_0", f"{tag}_90")
     return results
 
 
@@ -80,9 +83,8 @@ def inline_engine_unbalance(p, d):
     names = [f"theta{i}" for i in range(1, 5)]
     angles = [getattr(p, name) for name in names]
     positions = me.centred_positions(4, p.a)
-    results = _crank_polygons(d, p, names, positions)
+    results = _crank_polygons(d, p, names, positions, with_angles=True)
     for tag in ("Fp", "Cp", "Fs", "Cs"):
-        closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", f"{tag}_0", f"{tag}_90")
         scale = 4 * d.value_of("F1") * (1 if tag[1] == "p" else 1 / d.value_of("n"))
         scale *= 1 if tag[0] == "F" else p.a
         d.require(results[tag] >= 0.15 * scale, f"the engine nearly balances its {tag}: no direction to ask")
@@ -109,12 +111,12 @@ def inline_engine_firing(p, d):
     order = me.parse_firing_order(p.firing)
     count, strokes = len(order), int(p.strokes)
     interval = d.step("delta", strokes * PI / count, "rad", symbol=r"\Delta\theta",
-                      formula=rf"\frac{{{strokes * 180}^\circ}}{{{count}}}",
-                      note=f"cranks of a {strokes}-stroke engine are spaced {strokes * 180}°/N in firing order")
+                      formula=rf"\frac{{{strokes}\pi}}{{{count}}}",
+                      note=f"cranks of a {strokes}-stroke engine are {strokes * 180}°/N apart, in firing order")
     angles = me.crank_angles(order, strokes)
     for k, cylinder in enumerate(order):
-        d.step(f"theta{cylinder}", angles[cylinder], "rad", symbol=f"\\theta_{cylinder}",
-               formula=rf"{k}\,@delta" if k > 1 else ("@delta" if k == 1 else "0"),
+        d.step(f"theta{cylinder}", k * interval, "rad", symbol=f"\\theta_{cylinder}",
+               formula=rf"{k}\,@delta" if k > 1 else ("@delta" if k == 1 else ""),
                note=f"cylinder {cylinder} fires {_ordinal(k + 1)}")
     names = [f"theta{i}" for i in range(1, count + 1)]
     ordered = [angles[i] for i in range(1, count + 1)]
@@ -210,11 +212,11 @@ def _direct_reverse(p, d, alphas, factor_formulas):
     """The four resultants of direct and reverse cranks for cylinders on lines `alphas` (crank at θ = 0)."""
     r = d.step("r", p.S / 2, "m", formula=r"\frac{@S}{2}", note="the crank radius is half the stroke")
     n = _speed_and_ratio(d, p, "r")
-    d.step("Fc", me.crank_force(p.m, r, p.N), "N", symbol=r"\frac{m}{2} r \omega^2",
-           formula=r"\frac{@m}{2}\,@r\,@N^2", note="each primary direct or reverse crank carries half the mass")
-    d.step("Fc2", me.crank_force(p.m, r, p.N, n), "N", symbol=r"\frac{m}{2} (2\omega)^2 \frac{r}{4n}",
-           formula=r"\frac{@m}{2}\,(2\,@N)^2\,\frac{@r}{4\,@n}",
-           note="each secondary crank: length r/4n, turning at 2ω")
+    d.step("Fc", me.crank_force(p.m, r, p.N), "N", symbol=r"F_1",
+           formula=r"\frac{@m}{2}\,@r\,@N^2", note="the force of each primary crank, direct or reverse: it carries m/2")
+    d.step("Fc2", me.crank_force(p.m, r, p.N, n), "N", symbol=r"F_2",
+           formula=r"\frac{@m\,(2\,@N)^2\,@r}{8\,@n}",
+           note="each secondary crank carries m/2 on a crank r/4n long turning at 2ω")
     found = me.radial_cranks(alphas)
     sums = {key: found[long] for key, long in zip(("P_dir", "P_rev", "S_dir", "S_rev"),
                                                    ("primary_direct", "primary_reverse", "secondary_direct",
@@ -264,8 +266,10 @@ def radial_engine(p, d):
 
 def v_engine(p, d):
     """Example 2.9: a two-cylinder V engine on one crank, by direct and reverse cranks."""
-    formulas = {"P_dir": "2", "P_rev": r"2\left|\cos @V\right|", "S_dir": r"2\left|\cos\frac{@V}{2}\right|",
-                "S_rev": r"2\left|\cos\frac{3\,@V}{2}\right|"}
+    d.step("beta", p.V / 2, "rad", symbol=r"\beta", formula=r"\frac{@V}{2}",
+           note="each line of stroke is β from the centre line")
+    formulas = {"P_rev": r"2\left|\cos 2\,@beta\right|", "S_dir": r"2\left|\cos @beta\right|",
+                "S_rev": r"2\left|\cos 3\,@beta\right|"}
     out, sums, r, n = _direct_reverse(p, d, me.v_cylinder_angles(p.V), formulas)
     _crank_slips(p, d, out, sums, r, n, tuple(out))
     half = p.V / 2
