@@ -133,7 +133,7 @@ def lift(variant) -> str:
     """Problem 1.2: motor gear 1 drives 2; 3 on 2's shaft drives 4 on the drum; lift and counterweight hang
     on either side of the drum."""
     teeth = [need(variant, f"t{i}").si for i in range(1, 5)]
-    k = _scale(*teeth)
+    k = 0.8 * _scale(*teeth)  # three shafts and two loads: a smaller scale keeps the figure's height
     r = [t * k for t in teeth]
     drum = (0.0, 0.0)
     middle = on_circle(drum, r[2] + r[3], math.radians(-125))
