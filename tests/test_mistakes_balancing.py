@@ -1,0 +1,135 @@
+"""Balancing answers that are wrong in a known way are named: each template's own mistakes (a lost
+distance sign, rpm for rad/s, the secondary angle not doubled, ...) and the generic angle slips
+(measured the other way round, from the wrong axis, half a turn out)."""
+import pytest
+
+from exgen import units
+from exgen.bank import load_bank
+from exgen.variant import Polar, make_variant
+from graders.grade import grade_variant
+
+TEMPLATES = ("balancing.static_balance", "balancing.two_plane_balance", "balancing.complete_balance_position",
+             "balancing.complete_balance_masses", "balancing.bearing_reactions", "balancing.inline_engine_unbalance",
+             "balancing.inline_engine_firing", "balancing.inline_primary_balance", "balancing.radial_engine",
+             "balancing.v_engine")
+
+
+def as_text(value, part):
+    if isinstance(value, Polar):
+        return value.text(part.unit)
+    if isinstance(value, str):
+        return value
+    return units.format_quantity(value, part.unit, 6)
+
+
+def grade(variant, part_id, text):
+    return next(r for r in grade_variant(variant, {part_id: text}).parts if r.part_id == part_id)
+
+
+def _close(a, b, part):
+    from graders.checks import for_part
+
+    return for_part(part)(a, b)
+
+
+@pytest.mark.parametrize("template_id", TEMPLATES)
+def test_every_named_mistake_is_recognised_with_its_own_words(bank, template_id):
+    template = bank.get(template_id)
+    seen = set()
+    for seed in range(12):
+        variant = make_variant(template, seed)
+        for part in template.parts:
+            recorded = variant.mistakes[part.id]
+            for spec in part.mistakes:
+                if spec.when not in recorded:
+                    continue
+                result = grade(variant, part.id, as_text(recorded[spec.when], part))
+                assert result.status == "wrong", (seed, part.id, spec.when)
+                # another listed mistake may give the same value; the first listed one is named
+                same = [m.when for m in part.mistakes if m.when in recorded and
+                        _close(recorded[m.when], recorded[spec.when], part)]
+                assert result.mistake in same, (seed, part.id, spec.when, result.mistake)
+                if result.mistake == spec.when and spec.say:
+                    assert result.message == spec.say
+                seen.add((part.id, spec.when))
+    named = {(p.id, m.when) for p in template.parts for m in p.mistakes if p.type != "choice"}
+    assert named <= seen | {(p.id, m.when) for p in template.parts for m in p.mistakes if p.type == "choice"}
+
+
+POLAR_PARTS = [(t, p.id) for t in TEMPLATES for p in load_bank().get(t).parts if p.type == "polar"]
+
+
+@pytest.mark.parametrize("template_id, part_id", POLAR_PARTS)
+@pytest.mark.parametrize("slip, expected", [("mirrored", "mirrored_angle"), ("from_other_axis", "wrong_axis"),
+                                            ("quarter_turn", "wrong_axis"), ("magnitude_only", "magnitude_wrong")])
+def test_generic_slips_of_a_polar_answer_are_named(bank, template_id, part_id, slip, expected):
+    template = bank.get(template_id)
+    part = template.part(part_id)
+    for seed in range(40):
+        variant = make_variant(template, seed)
+        right = variant.answers[part_id].value
+        angle = {"mirrored": -right.angle_deg, "from_other_axis": 90 - right.angle_deg,
+                 "quarter_turn": right.angle_deg + 90, "magnitude_only": right.angle_deg}[slip]
+        size = right.magnitude * (1.2 if slip == "magnitude_only" else 1.0)
+        given = Polar.of(size, angle)
+        recorded = variant.mistakes[part_id].values()
+        degenerate = _close(given, right, part) or any(_close(given, m, part) for m in recorded)
+        if not degenerate:
+            break
+    else:
+        pytest.skip("every drawn variant makes this slip coincide with a named mistake")
+    result = grade(variant, part_id, given.text(part.unit))
+    assert result.status == "wrong" and result.mistake == expected, (seed, result.message)
+
+
+@pytest.mark.parametrize("template_id, part_id", [("balancing.complete_balance_position", "b"),
+                                                  ("balancing.complete_balance_position", "c"),
+                                                  ("balancing.complete_balance_masses", "a")])
+@pytest.mark.parametrize("shift, expected", [(lambda a: -a, "mirrored_angle"), (lambda a: 90 - a, "wrong_axis")])
+def test_generic_slips_of_an_angle_answer_are_named(bank, template_id, part_id, shift, expected):
+    template = bank.get(template_id)
+    part = template.part(part_id)
+    variant = next(v for v in (make_variant(template, s) for s in range(40))
+                   if all(abs((shift(v.answers[part_id].value) - m) % 360) > 2 and
+                          abs((shift(v.answers[part_id].value) - m) % 360) < 358
+                          for m in v.mistakes[part_id].values()))
+    result = grade(variant, part_id, f"{shift(variant.answers[part_id].value):.2f} deg")
+    assert result.status == "wrong" and result.mistake == expected
+
+
+def test_rpm_for_rad_s_in_a_bearing_force_is_named(bank):
+    variant = make_variant(bank.get("balancing.bearing_reactions"), 3)
+    right = variant.answers["a"].value
+    rpm = variant.param("N").si * 60 / (2 * 3.141592653589793)
+    wrong = Polar.of(right.magnitude * (rpm / variant.param("N").si) ** 2, right.angle_deg)
+    result = grade(variant, "a", wrong.text("N"))
+    assert result.mistake == "rpm_as_rad_s" and "2πN/60" in result.message
+
+
+def test_half_a_turn_out_on_a_bearing_is_the_balancing_direction(bank):
+    variant = make_variant(bank.get("balancing.bearing_reactions"), 3)
+    right = variant.answers["b"].value
+    result = grade(variant, "b", Polar.of(right.magnitude, right.angle_deg + 180).text("N"))
+    assert result.mistake == "balance_direction" and "opposite" in result.message
+
+
+@pytest.fixture(scope="module")
+def flat_four(bank):
+    from exgen.solve import solve
+
+    variant, _ = solve(bank.get("balancing.inline_engine_firing"),
+                       {"firing": "1-3-4-2", "strokes": "4", "m": "1 kg", "r": "60 mm", "l": "240 mm",
+                        "a": "100 mm", "N": "2000 rpm"})
+    return variant
+
+
+def test_a_balanced_engine_called_balanced_when_only_the_primary_is(flat_four):
+    assert flat_four.answers["d"].value == "not balanced"  # four-stroke flat four: secondary forces remain
+    result = grade(flat_four, "d", "balanced")
+    assert result.mistake == "secondary_ignored"
+    assert grade(flat_four, "d", "Not balanced").status == "correct"
+
+
+@pytest.mark.xfail(reason="graders.marking checks a choice is readable without the shared aliases", strict=False)
+def test_a_shared_alias_of_a_choice_is_accepted(flat_four):
+    assert grade(flat_four, "d", "unbalanced").status == "correct"
