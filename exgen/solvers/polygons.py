@@ -27,13 +27,20 @@ def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic:
     scale = sum(abs(value(s)) for s, _ in terms)
     along, across = (0.0 if abs(v) <= ZERO * scale else v for v in (along, across))
     arg = (lambda a: rf"(2\,@{a})") if harmonic == 2 else (lambda a: f"@{a}")
-    x = d.step(f"{name}_0", along, unit, symbol=f"{symbol}_{{0}}",
+    x = d.step(f"{name}_0", along, unit, symbol=_subscript(symbol, "0"),
                formula=" + ".join(rf"@{s} \cos {arg(a)}" if a else f"@{s}" for s, a in terms),
                note=f"{what}: components along the 0° line")
-    y = d.step(f"{name}_90", across, unit, symbol=f"{symbol}_{{90}}",
+    y = d.step(f"{name}_90", across, unit, symbol=_subscript(symbol, "90"),
                formula=" + ".join(rf"@{s} \sin {arg(a)}" for s, a in terms if a) or "0",
                note=f"{what}: components along the 90° line")
     return x, y
+
+
+def _subscript(symbol: str, index: str) -> str:
+    """'M' -> 'M_{0}'; a symbol that has a subscript already gets the index added: 'F_{p}' -> 'F_{p,0}'."""
+    if "_{" in symbol and symbol.endswith("}"):
+        return f"{symbol[:-1]},{index}}}"
+    return f"{symbol}_{{{index}}}"
 
 
 def closing_angle(d, name: str, symbol: str, x_name: str, y_name: str, opposite: bool = True) -> float:
