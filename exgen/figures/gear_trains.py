@@ -18,8 +18,8 @@ FACE = 16.0        # px: a gear's face width
 COLUMN = 170.0     # px between mesh columns (room for labels)
 HEIGHT = 330.0     # px from the lowest to the highest gear
 END = 70.0         # shaft beyond its outer gears
-LABEL = 13.0       # label font size
-ROW = 16.0
+LABEL = 14.0       # label font size
+ROW = 17.0
 
 
 @dataclass(frozen=True)
