@@ -133,3 +133,16 @@ def test_a_balanced_engine_called_balanced_when_only_the_primary_is(flat_four):
 @pytest.mark.xfail(reason="graders.marking checks a choice is readable without the shared aliases", strict=False)
 def test_a_shared_alias_of_a_choice_is_accepted(flat_four):
     assert grade(flat_four, "d", "unbalanced").status == "correct"
+
+
+def test_a_wrong_angle_of_d_carries_forward_to_b(bank):
+    import math
+
+    from exgen.variant import answer_for, rerun
+
+    variant = make_variant(bank.get("balancing.complete_balance_position"), 5)
+    wrong = (variant.answers["b"].value + 25) % 360
+    again = rerun(variant, {"theta_D": math.radians(wrong)})
+    theta_b, mass_b = (answer_for(variant.template.part(k), again).value for k in "cd")
+    result = grade_variant(variant, {"b": f"{wrong} deg", "c": f"{theta_b:.3f} deg", "d": f"{mass_b:.4f} kg"})
+    assert [r.status for r in result.parts] == ["blank", "wrong", "carried", "carried"]
