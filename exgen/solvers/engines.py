@@ -90,6 +90,7 @@ def inline_engine_unbalance(p, d):
         d.require(results[tag] >= 0.15 * scale, f"the engine nearly balances its {tag}: no direction to ask")
         d.mistake(f"theta_{tag}", "resultant_not_balance", d.value_of(f"theta_{tag}") + PI)
     _inline_slips(d, p, angles, positions, results, angle_steps=False)
+    record(d, "Fp", "scalar_sum", 4 * d.value_of("F1"), results["Fp"])
     n = p.l / p.r
     for harmonic, tag in ((1, "Cp"), (2, "Cs")):
         right = (results[tag], d.value_of(f"theta_{tag}"))
