@@ -70,7 +70,7 @@ class QuestionMarker:
             return result.make(WRONG, wrong_kind_message(exc, part.unit), WRONG_KIND)
         except QuantityError as exc:
             return result.make(UNREADABLE, _format_problem(part, str(exc)))
-        if part.type == "choice" and not any(checks.choice(given.value, c) for c in part.choices):
+        if part.type == "choice" and not any(checks.choice(given.value, c, checks.choice_aliases()) for c in part.choices):
             return result.make(UNREADABLE, _format_problem(part, f"'{_short(text)}' is not one of the choices"))
         self.readings[part.id] = given
         matches = checks.for_part(part)
