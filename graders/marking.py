@@ -98,9 +98,15 @@ class QuestionMarker:
         try:
             for used_id in part.uses:
                 used = template.part(used_id)
-                if used_id in self.readings and used.type in NUMERIC_TYPES:
+                if used_id not in self.readings:
+                    continue
+                value = self.readings[used_id].value
+                if used.type in NUMERIC_TYPES:
                     step = self.variant.step(used.answer)
-                    overrides[used.answer] = units.convert(float(self.readings[used_id].value), used.unit, step.unit)
+                    overrides[used.answer] = units.convert(float(value), used.unit, step.unit)
+                elif used.type == "polar":  # both halves: the size in its step's unit, the angle in its own
+                    overrides[used.answer] = units.convert(value.magnitude, used.unit, self.variant.step(used.answer).unit)
+                    overrides[used.angle] = units.convert(value.angle_deg, "deg", self.variant.step(used.angle).unit)
         except (ExgenError, StopIteration, ValueError, ArithmeticError):
             return None
         derivation = self._rerun(overrides)

@@ -69,3 +69,10 @@ def test_choice_aliases(given, expected):
     from graders.checks import choice, choice_aliases
 
     assert choice(given, expected, choice_aliases())
+
+
+def test_an_error_in_a_polar_part_is_carried_forward(variant):
+    # (a) wrong size, (b) = that size / b, worked correctly from it: (b) earns its marks.
+    results = {r.part_id: r for r in grade_variant(variant, {"a": "600 kg mm at 48", "b": f"{600 / 110:.4f} kg"}).parts}
+    assert results["a"].status == "wrong" and results["b"].status == "carried"
+    assert results["b"].points == results["b"].max_points and "from your (a)" in results["b"].message

@@ -130,7 +130,6 @@ def test_a_balanced_engine_called_balanced_when_only_the_primary_is(flat_four):
     assert grade(flat_four, "d", "Not balanced").status == "correct"
 
 
-@pytest.mark.xfail(reason="graders.marking checks a choice is readable without the shared aliases", strict=False)
 def test_a_shared_alias_of_a_choice_is_accepted(flat_four):
     assert grade(flat_four, "d", "unbalanced").status == "correct"
 
