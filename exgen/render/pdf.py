@@ -34,6 +34,8 @@ def _context(sheet, key: bool) -> dict:
     if key:
         pieces.insert(0, "*Instructor key*")
     context["footer_left"] = " · ".join(p for p in pieces if p)
+    # on the sheet's last page, above the footer rule: never a page of its own
+    context["closing"] = "" if key else "Write your answers in the answer file that came with this sheet."
     return context
 
 
