@@ -13,6 +13,7 @@ from graders.grade import grade_batch, grade_sheet
 from graders.report import write_results
 
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 300
+assignment_file = sys.argv[2] if len(sys.argv) > 2 else "tutorial1.yaml"
 bank = load_bank()
 assignment = load_assignment(Path(Path(__file__).parent.parent / "examples" / "tutorial1.yaml"), bank)
 secret = b"b" * 32
