@@ -83,9 +83,7 @@ def load_template(path: Path) -> Template:
     """Read one template file, raising BankError with every problem found in it."""
     raw = path.read_bytes()
     try:
-        text = raw.decode("utf-8")
-        data = yaml.safe_load(text)
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root, data = _parse(raw.decode("utf-8"))
     except (UnicodeDecodeError, yaml.YAMLError) as exc:
         line = getattr(getattr(exc, "problem_mark", None), "line", None)
         raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
@@ -94,6 +92,20 @@ def load_template(path: Path) -> Template:
     if reader.errors:
         raise BankError(reader.errors)
     return template
+
+
+#: libyaml's safe loader when PyYAML was built with it (10x faster), else the pure-Python one.
+_SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+
+
+def _parse(text: str):
+    """The node tree (for line numbers) and the data, from one safe parse."""
+    loader = _SafeLoader(text)
+    try:
+        root = loader.get_single_node()
+        return root, (loader.construct_document(root) if root is not None else None)
+    finally:
+        loader.dispose()
 
 
 class _Reader:
