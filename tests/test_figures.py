@@ -2,8 +2,6 @@
 import dataclasses
 import math
 import re
-import xml.etree.ElementTree as ET
-from decimal import Decimal
 
 import pytest
 
@@ -14,33 +12,18 @@ from exgen.figures.belts import belt_drive, compound_drive
 from exgen.figures.svg import num, subscripted
 from exgen.figures.tangents import belt_loop
 from exgen.template import ParamSpec
-from exgen.variant import build_variant, make_variant
+from exgen.variant import make_variant
+from svg_helpers import SVG, circles, root, texts, variant_of
 
-SVG = "{http://www.w3.org/2000/svg}"
 DRIVE = ParamSpec("drive", label="belt arrangement", choices=("open", "crossed"))
 
 
-def variant_of(bank, template_id, extra=(), **values):
-    """A variant of a bank template with some printed values replaced (Decimals or words)."""
-    template = bank.get(template_id)
-    if extra:
-        template = dataclasses.replace(template, params=template.params + tuple(extra))
-    base = make_variant(template, 1)
-    printed = {p.name: p.exact for p in base.params}
-    printed.update({k: v if isinstance(v, str) else Decimal(str(v)) for k, v in values.items()})
-    return build_variant(template, printed, check=False)
 
 
-def parse(svg: str) -> ET.Element:
-    return ET.fromstring(svg)
 
 
-def texts(svg: str) -> list[str]:
-    return ["".join(t.itertext()) for t in parse(svg).iter(f"{SVG}text")]
 
 
-def circles(svg: str, cls: str) -> list[ET.Element]:
-    return [c for c in parse(svg).iter(f"{SVG}circle") if cls in c.get("class", "").split()]
 
 
 def figure_templates(bank):
@@ -57,11 +40,11 @@ def test_every_figure_template_gives_valid_svg_with_a_viewbox(bank):
     for template in figure_templates(bank):
         for seed in range(4):
             svg = figure_svg(make_variant(template, seed))
-            root = parse(svg)
-            assert root.tag == f"{SVG}svg"
-            x0, y0, w, h = map(float, root.get("viewBox").split())
+            top = root(svg)
+            assert top.tag == f"{SVG}svg"
+            x0, y0, w, h = map(float, top.get("viewBox").split())
             assert w > 100 and h > 50, template.id
-            assert "DejaVu Sans" in root.get("font-family")
+            assert "DejaVu Sans" in top.get("font-family")
 
 
 def test_template_without_figure_gives_none(bank):
@@ -94,8 +77,8 @@ def test_labels_show_the_printed_values(flat):
 
 
 def test_open_and_crossed_drives_differ(bank):
-    open_ = variant_of(bank, "belts.flat_belt_power", [DRIVE], drive="open")
-    crossed = variant_of(bank, "belts.flat_belt_power", [DRIVE], drive="crossed")
+    open_ = variant_of(bank, "belts.flat_belt_power", extra=[DRIVE], drive="open")
+    crossed = variant_of(bank, "belts.flat_belt_power", extra=[DRIVE], drive="crossed")
     a, b = belt_drive(open_), belt_drive(crossed)
     assert a != b
     assert "Open belt drive" in a and "Crossed belt drive" in b

@@ -2,16 +2,14 @@
 unknowns marked "?", and never an answer printed."""
 import math
 import re
-import xml.etree.ElementTree as ET
-from decimal import Decimal
 
 import pytest
 
 from exgen import units
 from exgen.figures import figure_svg
-from exgen.variant import build_variant, make_variant
+from exgen.variant import make_variant
+from svg_helpers import SVG, elements, root, texts, variant_of
 
-SVG = "{http://www.w3.org/2000/svg}"
 UP_CLOCKWISE = (-90.0, 1)          # 0° straight up, angles growing clockwise on the page
 RIGHT_COUNTER = (0.0, -1)          # 0° to the right, angles growing counter-clockwise
 
@@ -20,25 +18,12 @@ def balancing_templates(bank):
     return [t for t in bank if t.id.startswith("balancing.")]
 
 
-def variant_of(bank, template_id, seed=1, **values):
-    """A variant with some printed values replaced (as they would be printed)."""
-    template = bank.get(template_id)
-    base = make_variant(template, seed)
-    printed = {p.name: p.exact for p in base.params}
-    printed.update({k: v if isinstance(v, str) else Decimal(str(v)) for k, v in values.items()})
-    return build_variant(template, printed, check=False)
 
 
-def root(svg):
-    return ET.fromstring(svg)
 
 
-def texts(svg):
-    return ["".join(t.itertext()) for t in root(svg).iter(f"{SVG}text")]
 
 
-def elements(svg, cls, tag="line"):
-    return [e for e in root(svg).iter(f"{SVG}{tag}") if cls in e.get("class", "").split()]
 
 
 def spoke_angle(svg, name):

@@ -1,40 +1,26 @@
 """Gear figures: valid SVG, deterministic, drawn to the data, no answer printed, no sense given away."""
 import math
 import re
-import xml.etree.ElementTree as ET
-from decimal import Decimal
 
 import pytest
 
 from exgen import units
 from exgen.figures import figure_svg
 from exgen.figures import gear_trains, gears, hoists
-from exgen.variant import build_variant, make_variant
+from exgen.variant import make_variant
+from svg_helpers import SVG, circles, root, texts, variant_of
 
-SVG = "{http://www.w3.org/2000/svg}"
 GEAR_FIGURES = ["gears.pitch_geometry", "gears.teeth_for_centre_distance", "gears.gear_pair_power",
                 "gears.simple_train", "gears.compound_train", "gears.reverted_train", "gears.epicyclic",
                 "gears.hoist_torque", "gears.lift_counterweight", "gears.haulage_power"]
 
 
-def variant_of(bank, template_id, **values):
-    """A variant with some printed values replaced (numbers or words), solved without drawing checks."""
-    template = bank.get(template_id)
-    printed = {p.name: p.exact for p in make_variant(template, 1).params}
-    printed.update({k: v if isinstance(v, str) else Decimal(str(v)) for k, v in values.items()})
-    return build_variant(template, printed, check=False)
 
 
-def root(svg):
-    return ET.fromstring(svg)
 
 
-def texts(svg):
-    return ["".join(t.itertext()) for t in root(svg).iter(f"{SVG}text")]
 
 
-def circles(svg, cls):
-    return [c for c in root(svg).iter(f"{SVG}circle") if cls in c.get("class", "").split()]
 
 
 def radius(svg, cls):

@@ -88,7 +88,6 @@ def test_generic_slips_of_a_polar_answer_are_named(bank, template_id, part_id, s
 @pytest.mark.parametrize("shift, expected", [(lambda a: -a, "mirrored_angle"), (lambda a: 90 - a, "wrong_axis")])
 def test_generic_slips_of_an_angle_answer_are_named(bank, template_id, part_id, shift, expected):
     template = bank.get(template_id)
-    part = template.part(part_id)
     variant = next(v for v in (make_variant(template, s) for s in range(40))
                    if all(abs((shift(v.answers[part_id].value) - m) % 360) > 2 and
                           abs((shift(v.answers[part_id].value) - m) % 360) < 358

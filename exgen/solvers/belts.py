@@ -93,8 +93,7 @@ def belt_power(p, d):
                    formula=r"1 - \frac{@T1 - @T2}{@A\,@E}")
     d.require_apart(1.0, creep, APART_FINE, "creep")
     v2 = d.step("v2", v * creep, "m/s", symbol=r"v_2", formula=r"@v\,@creep")
-    p_elastic = d.step("P_elastic", mb.power(t1, t2, v2), "W", symbol=r"P",
-                       formula=r"(@T1 - @T2)\,@v2")
+    d.step("P_elastic", mb.power(t1, t2, v2), "W", symbol=r"P", formula=r"(@T1 - @T2)\,@v2")
     d.mistake("P_elastic", "creep_ignored", p_heavy)
     d.mistake("P_elastic", "creep_added", (t1 - t2) * v * (2 - creep))
 

@@ -150,7 +150,7 @@ def gear_pair_power(p, d):
     n = d.step("n", p.t1 / p.t2, "", symbol="n", formula=r"\frac{@t1}{@t2}",
                note=r"$n = \omega_2/\omega_1 = d_1/d_2 = t_1/t_2$; the gears turn opposite ways")
     d.mistake("n", "ratio_inverted", p.t2 / p.t1)
-    d2 = d.step("d2", mg.pitch_diameter(p.t2, p.m), "m", formula=r"@m\,@t2")
+    d.step("d2", mg.pitch_diameter(p.t2, p.m), "m", formula=r"@m\,@t2")
     d.mistake("d2", "module_as_diametral_pitch", p.t2 / (p.m * 1000) / 1000)
     d.mistake("d2", "wrong_gear", mg.pitch_diameter(p.t1, p.m))
     torque_ideal = d.step("tau2_ideal", p.tau1 / n, "N*m", symbol=r"\tau_{2,\mathrm{ideal}}", formula=r"\frac{@tau1}{@n}",
@@ -160,7 +160,7 @@ def gear_pair_power(p, d):
     d.mistake("N2", "ratio_inverted", p.N1 / n)
     p1 = d.step("P1", p.tau1 * p.N1, "W", formula=r"@tau1\,@N1")
     d.mistake("P1", "rpm_as_rad_s", p.tau1 * p.N1 * 60 / (2 * math.pi))
-    p2 = d.step("P2", p.eta * p1, "W", formula=r"@eta\,@P1", note=r"efficiency $\eta = P_2/P_1$")
+    d.step("P2", p.eta * p1, "W", formula=r"@eta\,@P1", note=r"efficiency $\eta = P_2/P_1$")
     d.mistake("P2", "efficiency_wrong_way", p1 / p.eta)
     d.mistake("P2", "efficiency_ignored", p1)
     d.step("tau2", p.eta * torque_ideal, "N*m", formula=r"@eta\,@tau2_ideal", note=r"$\tau_2 = P_2/\omega_2$")
