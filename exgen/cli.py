@@ -34,6 +34,16 @@ def _secret(args, assignment, create: bool):
     return secret
 
 
+def _assignment_and_roster(args):
+    """The bank, the assignment (checked against it) and the roster path (option, else the file's)."""
+    from .assignment import load_assignment
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank)
+    roster = Path(args.roster) if args.roster else assignment.roster
+    return bank, assignment, roster
+
+
 def cmd_list(args) -> int:
     bank = _bank(args)
     rows = [t for t in bank if args.chapter is None or t.chapter == args.chapter]
@@ -94,12 +104,10 @@ def solution_json(variant) -> dict:
 
 
 def cmd_generate(args) -> int:
-    from .assignment import load_assignment, load_roster
+    from .assignment import load_roster
     from .generate import default_jobs, generate
 
-    bank = _bank(args)
-    assignment = load_assignment(Path(args.assignment), bank)
-    roster_path = Path(args.roster) if args.roster else assignment.roster
+    bank, assignment, roster_path = _assignment_and_roster(args)
     if roster_path is None:
         raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
     students = load_roster(roster_path)
@@ -116,11 +124,9 @@ def cmd_grade(args) -> int:
     from graders.grade import grade_batch
     from graders.report import write_results
 
-    from .assignment import load_assignment, load_roster
+    from .assignment import load_roster
 
-    bank = _bank(args)
-    assignment = load_assignment(Path(args.assignment), bank)
-    roster_path = Path(args.roster) if args.roster else assignment.roster
+    bank, assignment, roster_path = _assignment_and_roster(args)
     roster = load_roster(roster_path) if roster_path else None
     secret = _secret(args, assignment, create=False)
     submissions = Path(args.submissions)

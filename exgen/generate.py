@@ -40,8 +40,8 @@ def draw_sheets(assignment: Assignment, students: list[Student], bank: Bank, sec
     return [build_sheet(assignment, s, bank, secret) for s in progress(students, len(students), "drawing")]
 
 
-def write_figures(sheet: Sheet, folder: Path) -> dict[str, str]:
-    """Each question's figure as an SVG file in `folder`; returns slot -> file name."""
+def write_figures(sheet: Sheet, folders: list[Path]) -> dict[str, str]:
+    """Each question's figure, drawn once, as an SVG file in every folder; returns slot -> file name."""
     from .figures import figure_svg
 
     files = {}
@@ -49,7 +49,8 @@ def write_figures(sheet: Sheet, folder: Path) -> dict[str, str]:
         svg = figure_svg(question.variant)
         if svg:
             name = f"{question.slot}.svg"
-            (folder / name).write_text(svg, encoding="utf-8")
+            for folder in folders:
+                (folder / name).write_text(svg, encoding="utf-8")
             files[question.slot] = name
     return files
 
@@ -64,8 +65,7 @@ def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
     key_dir = out / "keys" / sheet.student.id
     for folder in (student_dir, key_dir):
         folder.mkdir(parents=True, exist_ok=True)
-    figures = write_figures(sheet, student_dir)
-    write_figures(sheet, key_dir)
+    figures = write_figures(sheet, [student_dir, key_dir])
     (student_dir / "sheet.md").write_text(sheet_markdown(sheet, figures), encoding="utf-8")
     (student_dir / "answers.yaml").write_text(answer_form(sheet), encoding="utf-8")
     (key_dir / "key.md").write_text(key_markdown(sheet, figures), encoding="utf-8")
