@@ -134,7 +134,7 @@ def cmd_grade(args) -> int:
         raise ExgenError(f"{submissions}: not a directory of answer files")
     batch = grade_batch(assignment, bank, secret, submissions, roster=roster, progress=_progress)
     paths = write_results(batch, Path(args.out))
-    print(batch.summary() if hasattr(batch, "summary") else f"graded {len(batch.results)} submission(s)")
+    print(batch.summary())
     for name, path in paths.items():
         print(f"{name}: {path}")
     return 0
