@@ -17,7 +17,7 @@ from pathlib import Path
 import yaml
 
 from . import expr
-from .errors import BankError, TemplateError, UnknownTemplate
+from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .template import ANSWER_TYPES, MistakeSpec, ParamSpec, PartSpec, Template, Tolerance
 
 BANKS_ENV = "EXGEN_BANKS"
@@ -49,10 +49,13 @@ class Bank:
 
 
 def bank_dirs(extra: list[Path] | None = None) -> list[Path]:
-    """The packaged bank, then $EXGEN_BANKS, then any directories given explicitly."""
-    dirs = [Path(str(resources.files("exgen.banks")))]
-    dirs += [Path(p) for p in os.environ.get(BANKS_ENV, "").split(os.pathsep) if p]
-    return dirs + list(extra or [])
+    """The packaged bank, then $EXGEN_BANKS, then any directories given explicitly (each must exist)."""
+    from_env = [Path(p) for p in os.environ.get(BANKS_ENV, "").split(os.pathsep) if p]
+    for where, dirs in ((f"${BANKS_ENV}", from_env), ("--bank", list(extra or []))):
+        for directory in dirs:
+            if not directory.is_dir():
+                raise ExgenError(f"{directory} (from {where}): no such folder of templates")
+    return [Path(str(resources.files("exgen.banks")))] + from_env + list(extra or [])
 
 
 def load_bank(extra: list[Path] | None = None) -> Bank:

@@ -11,6 +11,8 @@ from pathlib import Path
 from . import __version__
 from .errors import ExgenError
 
+SEED_MAX = 2**64 - 1  # seeds are 64-bit (exgen.seeds.derive_seed)
+
 
 def _progress(items, total, label="working"):
     from tqdm import tqdm
@@ -22,6 +24,28 @@ def _bank(args):
     from .bank import load_bank
 
     return load_bank([Path(p) for p in args.bank])
+
+
+def _count(minimum: int, maximum: int | None = None):
+    """An argparse type: a whole number within [minimum, maximum], else a one-line usage error."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+        if value < minimum or (maximum is not None and value > maximum):
+            bounds = f"from {minimum} to {maximum}" if maximum is not None else f"of at least {minimum}"
+            raise argparse.ArgumentTypeError(f"{value} is out of range: give a whole number {bounds}")
+        return value
+
+    return parse
+
+
+class _Parser(argparse.ArgumentParser):
+    """Usage mistakes as one line (and the --help hint), like every other error of the command."""
+
+    def error(self, message: str):
+        self.exit(2, f"{self.prog}: {message} (see `{self.prog} --help`)\n")
 
 
 def _secret(args, assignment, create: bool):
@@ -156,7 +180,7 @@ def cmd_validate(args) -> int:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="exgen", description="Unique, gradeable Mechanics of Machines problems: sheets, keys, grading.")
     parser.add_argument("--version", action="version", version=f"exgen {__version__}")
     parser.add_argument("--bank", action="append", default=[], metavar="DIR",
@@ -169,7 +193,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("show", help="draw one variant of a template and print it")
     p.add_argument("id")
-    p.add_argument("--seed", type=int, help="the variant's seed (default: a fresh one)")
+    p.add_argument("--seed", type=_count(0, SEED_MAX), help="the variant's seed, 0 to 2^64-1 (default: a fresh one)")
     p.add_argument("--key", action="store_true", help="also print the answers and worked solution")
     p.set_defaults(func=cmd_show)
 
@@ -187,7 +211,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
     p.add_argument("--no-pdf", action="store_true", help="Markdown only (faster)")
-    p.add_argument("--jobs", type=int, help="processes making PDFs (default: one per core, up to 8)")
+    p.add_argument("--jobs", type=_count(1), help="processes making PDFs (default: one per core, up to 8)")
     p.set_defaults(func=cmd_generate)
 
     p = sub.add_parser("grade", help="grade a folder of returned answer files")
@@ -200,7 +224,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("validate", help="draw many variants of every template and check them")
     p.add_argument("ids", nargs="*", help="only these templates")
-    p.add_argument("--seeds", type=int, default=200, help="variants drawn per template (default 200)")
+    p.add_argument("--seeds", type=_count(1), default=200, help="variants drawn per template (default 200)")
     p.set_defaults(func=cmd_validate)
     return parser
 
@@ -211,6 +235,10 @@ def main(argv: list[str] | None = None) -> int:
         return args.func(args)
     except ExgenError as exc:
         print(f"exgen: {exc}", file=sys.stderr)
+        return 1
+    except OSError as exc:  # a folder or file the system refuses: say which, and why
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"exgen: {where}{exc.strerror or exc}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:
         print("exgen: interrupted", file=sys.stderr)

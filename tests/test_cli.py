@@ -51,6 +51,40 @@ def test_user_errors_are_one_line_without_traceback(capsys, argv, message):
     assert err.startswith("exgen: ") and message in err and "Traceback" not in err
 
 
+@pytest.mark.parametrize("argv, message", [
+    (["show", "belts.flat_belt_power", "--seed", "-5"], "--seed: -5 is out of range"),
+    (["show", "belts.flat_belt_power", "--seed", str(2**64)], "out of range"),
+    (["show", "belts.flat_belt_power", "--seed", "seven"], "'seven' is not a whole number"),
+    (["validate", "belts.drive_geometry", "--seeds", "0"], "--seeds: 0 is out of range"),
+    (["generate", str(EXAMPLES / "tutorial1.yaml"), "--out", "x", "--jobs", "0"], "--jobs: 0 is out of range"),
+])
+def test_usage_mistakes_are_one_line_and_not_success(capsys, tmp_path, monkeypatch, argv, message):
+    monkeypatch.chdir(tmp_path)  # nothing may be written, but if it were, not into the repository
+    with pytest.raises(SystemExit) as exited:
+        main(argv)
+    assert exited.value.code == 2
+    err = capsys.readouterr().err
+    assert message in err and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+
+
+def test_a_bank_folder_that_does_not_exist_is_an_error(capsys, tmp_path, monkeypatch):
+    monkeypatch.delenv("EXGEN_BANKS", raising=False)
+    assert main(["--bank", str(tmp_path / "nonexistent"), "list"]) == 1
+    assert "nonexistent (from --bank): no such folder of templates" in capsys.readouterr().err
+    monkeypatch.setenv("EXGEN_BANKS", str(tmp_path / "gone"))
+    assert main(["list"]) == 1
+    assert "gone (from $EXGEN_BANKS)" in capsys.readouterr().err
+
+
+def test_a_system_error_is_one_line_naming_the_path(capsys, tmp_path, monkeypatch):
+    monkeypatch.setenv("EXGEN_SECRET", "3f9a1c7e52b8d04e6a1f9c3b7d2e8a45")
+    blocker = tmp_path / "a-file"
+    blocker.write_text("not a folder")
+    assert main(["generate", str(EXAMPLES / "tutorial1.yaml"), "--out", str(blocker / "out"), "--no-pdf"]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("exgen: ") and "a-file" in err and len(err.strip().splitlines()) == 1
+
+
 def test_generate_then_grade(tmp_path, capsys, monkeypatch):
     monkeypatch.delenv("EXGEN_SECRET", raising=False)
     work = tmp_path / "course"
