@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,7 +22,7 @@ from .variant import Variant, make_variant
 
 ASSIGNMENT_KEYS = {"assignment", "title", "course", "due", "instructions", "secret_file", "questions", "roster"}
 QUESTION_KEYS = {"template", "slot", "points"}
-_SAFE_ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9._-]{0,63}$")
+_SAFE_ID = re.compile(r"\A[A-Za-z0-9][A-Za-z0-9._-]{0,63}\Z")
 
 
 @dataclass(frozen=True)
@@ -97,12 +98,15 @@ def load_assignment(path: Path, bank: Bank | None = None) -> Assignment:
             continue
         problems += [f"questions[{i}]: unknown key {k!r}" for k in item if k not in QUESTION_KEYS]
         slot = str(item.get("slot", f"q{i}"))
+        if not _SAFE_ID.match(slot):
+            problems.append(f"questions[{i}]: slot {slot[:40]!r} must be letters, digits, '.', '_' or '-', "
+                            "starting with a letter or digit (it names the question's files)")
         if slot in slots:
             problems.append(f"questions[{i}]: slot {slot!r} used twice")
         slots.add(slot)
         points = item.get("points")
-        if points is not None and (not isinstance(points, (int, float)) or points <= 0):
-            problems.append(f"questions[{i}]: points must be a positive number")
+        if points is not None and not _positive_number(points):
+            problems.append(f"questions[{i}]: points must be a positive, finite number (got {str(points)[:20]})")
             points = None
         if bank is not None:
             try:
@@ -122,6 +126,11 @@ def load_assignment(path: Path, bank: Bank | None = None) -> Assignment:
         secret_file=base / data["secret_file"] if data.get("secret_file") else None,
         roster=base / data["roster"] if data.get("roster") else None, path=path,
     )
+
+
+def _positive_number(value) -> bool:
+    """True for 3 or 2.5; False for 0, -1, .nan, .inf, true and text."""
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) and value > 0
 
 
 def load_roster(path: Path) -> list[Student]:
