@@ -167,6 +167,5 @@ def build_sheet(assignment: Assignment, student: Student, bank: Bank, secret: by
         template = bank.get(spec.template)
         variant = make_variant(template, derive_seed(secret, assignment.id, student.id, spec.slot))
         questions.append(Question(number, spec.slot, variant, spec.points or template.points))
-    versions = [q.variant.template.version for q in questions]
-    code = sheet_code(secret, assignment.id, student.id, versions)
+    code = sheet_code(secret, assignment.id, student.id, [f"{q.slot}={q.variant.template.id}" for q in questions])
     return Sheet(assignment, student, code, tuple(questions))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import secrets
 import sys
 from pathlib import Path
@@ -49,10 +50,13 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _secret(args, assignment, create: bool):
-    from .seeds import load_secret
+    from .seeds import ENV_VAR, load_secret
 
-    path = Path(args.secret_file) if args.secret_file else assignment.secret_file
-    secret, source = load_secret(path, create=create)
+    explicit = bool(args.secret_file)
+    path = Path(args.secret_file) if explicit else assignment.secret_file
+    secret, source = load_secret(path, create=create, explicit=explicit)
+    if explicit and os.environ.get(ENV_VAR):
+        print(f"Using the secret file {path}; ${ENV_VAR} is set but --secret-file wins.", file=sys.stderr)
     if source.endswith("(new)"):
         print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
     return secret

@@ -1,21 +1,33 @@
 """Seeds a student cannot derive: HMAC-SHA256 of the course secret over assignment/student/slot.
 
 The secret stays with the instructor (a file or the EXGEN_SECRET variable) and is never
-written on a sheet or into the manifest; the manifest records only a fingerprint of it, so
-grading with a different secret is caught before it marks a whole class wrong.
+written on a sheet or into the manifest. What is written is checked with a second key,
+stretched from the secret with scrypt: the sheet code printed on every sheet and the
+fingerprint in the manifest. A student who tries guesses of the secret against their sheet
+code pays a deliberately slow derivation per guess, and a secret too easy to guess is refused
+when it is loaded, so the code is no usable oracle.
 """
 from __future__ import annotations
 
 import hashlib
 import hmac
+import math
 import os
 import secrets
+from collections import Counter
+from functools import lru_cache
 from pathlib import Path
 
 from .errors import SecretError
 
 ENV_VAR = "EXGEN_SECRET"
 MIN_SECRET_BYTES = 16
+#: A rough count of a secret's guessing entropy below which it is refused.
+MIN_SECRET_BITS = 80
+#: scrypt cost of the check key (~32 MiB, ~0.1 s): what each offline guess of the secret costs.
+_SCRYPT = {"n": 2**15, "r": 8, "p": 1, "maxmem": 64 * 2**20, "dklen": 32}
+_CHECK_SALT = b"exgen: sheet codes and secret fingerprints"
+MAKE_ONE = "python3 -c 'import secrets; print(secrets.token_hex(32))'"
 
 
 def derive_seed(secret: bytes, assignment: str, student: str, slot: str) -> int:
@@ -25,39 +37,97 @@ def derive_seed(secret: bytes, assignment: str, student: str, slot: str) -> int:
     return int.from_bytes(digest[:8], "big")
 
 
+@lru_cache(maxsize=4)
+def _check_key(secret: bytes) -> bytes:
+    """The key of everything written from the secret (codes, fingerprint): never the seed key itself."""
+    return hashlib.scrypt(secret, salt=_CHECK_SALT, **_SCRYPT)
+
+
 def fingerprint(secret: bytes) -> str:
-    """A short public check value for a secret (reveals nothing usable about it)."""
+    """A short public check value for a secret: grading under another secret is caught by it."""
+    return hmac.new(_check_key(secret), b"fingerprint", hashlib.sha256).hexdigest()[:16]
+
+
+def legacy_fingerprint(secret: bytes) -> str:
+    """The fingerprint manifests written before the check key recorded (read, never written)."""
     return hmac.new(secret, b"exgen secret fingerprint", hashlib.sha256).hexdigest()[:16]
 
 
-def sheet_code(secret: bytes, assignment: str, student: str, versions: list[str]) -> str:
-    """A code printed on a sheet and its answer file; it changes if the secret or a template does."""
-    message = "/".join([assignment, student, *versions]).encode("utf-8")
-    digest = hmac.new(secret, message, hashlib.sha256).hexdigest()[:8].upper()
+def sheet_code(secret: bytes, assignment: str, student: str, questions: list[str]) -> str:
+    """A code printed on a sheet and its answer file, naming it: assignment, student and its questions
+    ("slot=template"). A file carrying another sheet's code is caught at grading."""
+    message = "/".join([assignment, student, *questions]).encode("utf-8")
+    digest = hmac.new(_check_key(secret), message, hashlib.sha256).hexdigest()[:8].upper()
     return f"{digest[:4]}-{digest[4:]}"
 
 
-def load_secret(path: Path | None, *, create: bool = False) -> tuple[bytes, str]:
-    """The course secret and where it came from: EXGEN_SECRET, else the file (made if asked)."""
-    env = os.environ.get(ENV_VAR)
-    if env:
-        secret = env.encode("utf-8")
-        source = f"${ENV_VAR}"
-    elif path is not None and path.is_file():
-        secret = path.read_bytes().strip()
-        source = str(path)
-    elif path is not None and create:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(secrets.token_hex(32) + "\n", encoding="ascii")
-        path.chmod(0o600)
-        secret = path.read_bytes().strip()
-        source = f"{path} (new)"
-    else:
-        where = f" and {path} does not exist" if path is not None else ""
-        raise SecretError(
-            f"no course secret: set {ENV_VAR} or give a secret file{where}. "
-            "Grading needs the same secret that generated the sheets."
-        )
+def estimated_bits(secret: bytes) -> float:
+    """A rough, deliberately pessimistic count of guessing entropy: symbol entropy (of the bytes, or of
+    their steps if lower: 'abcdef...') times the length of the shortest repeating unit."""
+    n = len(secret)
+    if n < 2:
+        return 0.0
+    period = next((p for p in range(1, n) if secret[p:] == secret[:-p]), n)
+    steps = bytes((b - a) % 256 for a, b in zip(secret, secret[1:]))
+    per_symbol = min(_entropy(secret), _entropy(steps))
+    return per_symbol * period
+
+
+def _entropy(data: bytes) -> float:
+    counts, n = Counter(data), len(data)
+    return -sum(c / n * math.log2(c / n) for c in counts.values())
+
+
+def check_strength(secret: bytes, source: str) -> None:
+    """Refuse a secret a student could guess (too short, repetitive, a run of letters)."""
     if len(secret) < MIN_SECRET_BYTES:
-        raise SecretError(f"the course secret from {source} is shorter than {MIN_SECRET_BYTES} bytes")
+        raise SecretError(f"the course secret from {source} is shorter than {MIN_SECRET_BYTES} bytes; "
+                          f"make a random one with: {MAKE_ONE}")
+    bits = estimated_bits(secret)
+    if bits < MIN_SECRET_BITS:
+        raise SecretError(f"the course secret from {source} is too easy to guess (about {bits:.0f} bits, at "
+                          f"least {MIN_SECRET_BITS} needed); make a random one with: {MAKE_ONE}")
+
+
+def load_secret(path: Path | None, *, create: bool = False, explicit: bool = False) -> tuple[bytes, str]:
+    """The course secret and where it came from. An `explicit` file (given on the command line) wins;
+    else EXGEN_SECRET; else the file, created (0600, atomically) if asked."""
+    env = os.environ.get(ENV_VAR)
+    if env and not explicit:
+        secret, source = env.encode("utf-8"), f"${ENV_VAR}"
+    elif path is not None and (path.exists() or not create):
+        secret, source = _read(path), str(path)
+    elif path is not None:
+        secret, source = _create(path), f"{path} (new)"
+    else:
+        raise SecretError(f"no course secret: set {ENV_VAR} or give a secret file. "
+                          "Grading needs the same secret that generated the sheets.")
+    check_strength(secret, source)
     return secret, source
+
+
+def _read(path: Path) -> bytes:
+    if path.is_dir():
+        raise SecretError(f"{path} is a folder, not a secret file")
+    try:
+        return path.read_bytes().strip()
+    except FileNotFoundError:
+        raise SecretError(f"no course secret: {path} does not exist (and {ENV_VAR} is not set). "
+                          "Grading needs the same secret that generated the sheets.") from None
+    except OSError as exc:
+        raise SecretError(f"cannot read the secret file {path}: {exc.strerror or exc}") from None
+
+
+def _create(path: Path) -> bytes:
+    """A new random secret in a file that is private (0600) from the moment it exists."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    secret = secrets.token_hex(32).encode("ascii")
+    try:
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    except FileExistsError:  # made by another run meanwhile: use that one
+        return _read(path)
+    with os.fdopen(fd, "wb") as handle:
+        handle.write(secret + b"\n")
+        handle.flush()
+        os.fsync(handle.fileno())
+    return secret
