@@ -1,0 +1,254 @@
+"""Planar four-bar linkages (course text §7.5-7.6, 7.9): plain functions over SI floats.
+
+Angles are radians, measured from +x counter-clockwise (the chapter's convention, unlike
+chapter 2's). Lengths are in any one unit. The four-bar is named as the text's figure for
+circuit 1: ground pivots A (crank) and D (rocker), crank AB = L2, coupler BC = L3, rocker
+CD = L4, ground AD = L1; BD is the diagonal and γ the transmission angle at C.
+
+The circuit is the text's: in circuit 1 (eqs 7.5-7.6) θ4 = θ3 + γ, so C lies on the left of
+the diagonal BD seen from B; in circuit 2 (eqs 7.7-7.8) θ4 = θ3 − γ and C lies on its right.
+A linkage that cannot close at the asked crank angle raises NotAssemblable.
+"""
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+
+CIRCUITS = (1, 2)
+GRASHOF_KINDS = ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
+#: Lengths equal to this relative precision are equal (S + L = P + Q is a change point).
+EQUAL = 1e-9
+
+
+class NotAssemblable(ValueError):
+    """The links cannot be joined at this input position."""
+
+
+def wrap(angle: float) -> float:
+    """An angle in (-π, π]."""
+    turned = math.remainder(angle, 2 * math.pi)
+    return math.pi if turned == -math.pi else turned
+
+
+def cosine_law_angle(adjacent1: float, adjacent2: float, opposite: float) -> float:
+    """The angle between two sides of a triangle from the three sides (cosine law)."""
+    cos = (adjacent1 ** 2 + adjacent2 ** 2 - opposite ** 2) / (2 * adjacent1 * adjacent2)
+    if abs(cos) > 1 + EQUAL:
+        raise NotAssemblable(f"no triangle has sides {adjacent1:g}, {adjacent2:g} and {opposite:g}")
+    return math.acos(max(-1.0, min(1.0, cos)))
+
+
+# ---- Grashof's criterion (§7.5, eq 7.2, Table 7.1) ---------------------------------------
+
+@dataclass(frozen=True)
+class Grashof:
+    """The criterion's terms and the class of a four-bar with its ground link named."""
+
+    s: float
+    l: float
+    p: float
+    q: float
+    kind: str
+    shortest: str  # which link is shortest: 'ground', 'crank', 'coupler' or 'rocker'
+
+    @property
+    def s_plus_l(self) -> float:
+        return self.s + self.l
+
+    @property
+    def p_plus_q(self) -> float:
+        return self.p + self.q
+
+
+def grashof(ground: float, crank: float, coupler: float, rocker: float) -> Grashof:
+    """Classify by S + L against P + Q and by where the shortest link is (Table 7.1).
+
+    S + L < P + Q: the shortest link turns fully; grounded beside it -> crank-rocker, the
+    shortest grounded -> double-crank, the link opposite it grounded -> double-rocker.
+    S + L = P + Q: change point. S + L > P + Q: no link turns fully, a triple rocker.
+    """
+    named = {"ground": ground, "crank": crank, "coupler": coupler, "rocker": rocker}
+    s, p, q, l = sorted(named.values())
+    shortest = min(named, key=named.get)
+    return Grashof(s, l, p, q, grashof_kind(s + l, p + q, shortest), shortest)
+
+
+def grashof_kind(s_plus_l: float, p_plus_q: float, shortest: str) -> str:
+    """Table 7.1 from the two sums and the position of the shortest link."""
+    if abs(s_plus_l - p_plus_q) <= EQUAL * max(s_plus_l, p_plus_q):
+        return "change-point"
+    if s_plus_l > p_plus_q:
+        return "triple-rocker"
+    return {"ground": "double-crank", "coupler": "double-rocker"}.get(shortest, "crank-rocker")
+
+
+# ---- four-bar position (§7.6, eqs 7.3-7.8) ------------------------------------------------
+
+@dataclass(frozen=True)
+class FourBar:
+    """The position of a four-bar at one crank angle: the text's BD, γ, θ3, θ4."""
+
+    bd: float
+    gamma: float
+    theta3: float
+    theta4: float
+
+
+def diagonal(ground: float, crank: float, theta2: float) -> float:
+    """BD = sqrt(L1² + L2² - 2 L1 L2 cos θ2) (eq 7.3)."""
+    return math.sqrt(max(0.0, ground ** 2 + crank ** 2 - 2 * ground * crank * math.cos(theta2)))
+
+
+def transmission_angle(coupler: float, rocker: float, bd: float) -> float:
+    """γ = cos⁻¹((L3² + L4² - BD²) / (2 L3 L4)) (eq 7.4): the angle between coupler and rocker."""
+    try:
+        return cosine_law_angle(coupler, rocker, bd)
+    except NotAssemblable:
+        raise NotAssemblable(f"coupler {coupler:g} and rocker {rocker:g} cannot span BD = {bd:g}") from None
+
+
+def _half_angle(numerator: float, denominator: float, fallback: complex) -> float:
+    """2 tan⁻¹(numerator / denominator), the text's form, as a direction in (-π, π].
+
+    When both vanish the half-angle form is indeterminate; `fallback` is the direction itself.
+    """
+    if math.hypot(numerator, denominator) < 1e-12 * (abs(fallback) or 1.0):
+        return wrap(cmath.phase(fallback))
+    return wrap(2 * math.atan2(numerator, denominator))
+
+
+def fourbar(ground: float, crank: float, coupler: float, rocker: float, theta2: float,
+            circuit: int = 1) -> FourBar:
+    """θ3 and θ4 by the text's equations: circuit 1 by 7.5-7.6, circuit 2 by 7.7-7.8."""
+    if circuit not in CIRCUITS:
+        raise ValueError(f"circuit must be 1 or 2, not {circuit!r}")
+    l1, l2, l3, l4 = ground, crank, coupler, rocker
+    bd = diagonal(l1, l2, theta2)
+    gamma = transmission_angle(l3, l4, bd)
+    sign = 1.0 if circuit == 1 else -1.0
+    s2, c2, sg, cg = math.sin(theta2), math.cos(theta2), math.sin(gamma), math.cos(gamma)
+    # In circuit 1, e^{iθ3} (L3 - L4 e^{iγ}) = L1 - L2 e^{iθ2}: both sides point along the coupler.
+    bd_vector = complex(l1 - l2 * c2, -l2 * s2)
+    theta3 = _half_angle(-l2 * s2 + sign * l4 * sg, l1 + l3 - l2 * c2 - l4 * cg,
+                         bd_vector / complex(l3 - l4 * cg, -sign * l4 * sg))
+    theta4 = _half_angle(l2 * s2 - sign * l3 * sg, l4 - l1 + l2 * c2 - l3 * cg,
+                         -bd_vector / complex(l4 - l3 * cg, sign * l3 * sg))
+    return FourBar(bd, gamma, theta3, theta4)
+
+
+def can_assemble(ground: float, crank: float, coupler: float, rocker: float, theta2: float) -> bool:
+    """Whether coupler and rocker reach across BD at this crank angle (either circuit)."""
+    bd = diagonal(ground, crank, theta2)
+    return abs(coupler - rocker) <= bd <= coupler + rocker
+
+
+def rotate(point: tuple[float, float], angle: float) -> tuple[float, float]:
+    c, s = math.cos(angle), math.sin(angle)
+    return point[0] * c - point[1] * s, point[0] * s + point[1] * c
+
+
+def polar(origin: tuple[float, float], length: float, angle: float) -> tuple[float, float]:
+    """The point `length` from `origin` in the direction `angle` (eq 7.9)."""
+    return origin[0] + length * math.cos(angle), origin[1] + length * math.sin(angle)
+
+
+def joints(ground: float, crank: float, coupler: float, rocker: float, theta2: float, circuit: int = 1,
+           origin: tuple[float, float] = (0.0, 0.0), theta1: float = 0.0) -> dict[str, tuple[float, float]]:
+    """A, B, C, D with A at `origin` and the ground line AD at `theta1`; θ2 is absolute (from +x)."""
+    pos = fourbar(ground, crank, coupler, rocker, theta2 - theta1, circuit)
+    a = origin
+    b = polar(a, crank, theta2)
+    d = polar(a, ground, theta1)
+    c = polar(b, coupler, pos.theta3 + theta1)
+    return {"A": a, "B": b, "C": c, "D": d}
+
+
+def side(a, b, point) -> float:
+    """> 0 when `point` lies on the left of the line a -> b, < 0 on its right."""
+    return (b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0])
+
+
+def _segments_cross(p1, p2, q1, q2) -> bool:
+    return side(p1, p2, q1) * side(p1, p2, q2) < 0 and side(q1, q2, p1) * side(q1, q2, p2) < 0
+
+
+def is_crossed(points: dict[str, tuple[float, float]]) -> bool:
+    """Whether the loop A-B-C-D crosses itself (the crossed configuration), else it is open."""
+    a, b, c, d = (points[k] for k in "ABCD")
+    return _segments_cross(a, b, c, d) or _segments_cross(b, c, d, a)
+
+
+# ---- coupler point (§7.6, Figure 7.21; the four-bar example's point C) --------------------
+
+def coupler_point(c: tuple[float, float], theta3: float, distance: float, alpha: float,
+                  left_of_bc: bool) -> tuple[float, float]:
+    """The point `distance` from C, at the angle α from CB, on the given side of the line B -> C.
+
+    Seen from C the coupler points back along θ3 + π; a point on the right of B -> C is turned
+    counter-clockwise from there (the example's θ6 = θ3 + α), a point on the left clockwise.
+    """
+    turn = -alpha if left_of_bc else alpha
+    return polar(c, distance, theta3 + math.pi + turn)
+
+
+# ---- limit positions of a crank-rocker (Problems 7.2-7.3) ---------------------------------
+
+@dataclass(frozen=True)
+class Limits:
+    """The rocker's two extreme positions, where crank and coupler line up."""
+
+    theta4_extended: float   # crank and coupler in line, AC = L3 + L2
+    theta4_folded: float     # crank folded back on the coupler, AC = L3 - L2
+    theta2_extended: float
+    theta2_folded: float
+
+    @property
+    def swing(self) -> float:
+        return abs(self.theta4_extended - self.theta4_folded)
+
+
+def rocker_limits(ground: float, crank: float, coupler: float, rocker: float) -> Limits:
+    """Limit positions of a crank-rocker in circuit 1 (C above the ground line AD)."""
+    if crank >= coupler:
+        raise NotAssemblable("the crank must be shorter than the coupler to fold back on it")
+    angles = []
+    for reach in (coupler + crank, coupler - crank):
+        at_d = cosine_law_angle(ground, rocker, reach)
+        at_a = cosine_law_angle(ground, reach, rocker)
+        angles.append((math.pi - at_d, at_a))
+    (t4_ext, t2_ext), (t4_fold, a_fold) = angles
+    return Limits(t4_ext, t4_fold, t2_ext, wrap(a_fold + math.pi))
+
+
+# ---- a link swung by a linear actuator (Problem 7.2) --------------------------------------
+
+def actuator_link_angle(pivots: float, arm: float, actuator: float) -> float:
+    """The angle at the link's pivot between the line to the actuator's pivot and the link."""
+    return cosine_law_angle(pivots, arm, actuator)
+
+
+# ---- two-position synthesis (§7.11) -------------------------------------------------------
+
+def bisector_on_line(p1: tuple[float, float], p2: tuple[float, float], y_line: float) -> tuple[float, float]:
+    """Where the perpendicular bisector of p1 p2 meets the line y = y_line: a ground pivot
+    from which a link moves the point p1 to p2."""
+    dx, dy = p2[0] - p1[0], p2[1] - p1[1]
+    if abs(dx) < EQUAL * (abs(dy) + 1.0):
+        raise NotAssemblable("the bisector is parallel to the pivot line")
+    mx, my = (p1[0] + p2[0]) / 2, (p1[1] + p2[1]) / 2
+    # points q on the bisector satisfy (q - m)·(p2 - p1) = 0
+    return mx - (y_line - my) * dy / dx, y_line
+
+
+def circumcentre(p1, p2, p3) -> tuple[float, float]:
+    """The point equidistant from three positions: where their bisectors meet (three-position synthesis)."""
+    ax, ay = p1
+    bx, by = p2
+    cx, cy = p3
+    det = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    if abs(det) < EQUAL * (abs(ax) + abs(bx) + abs(cx) + abs(ay) + abs(by) + abs(cy) + 1.0) ** 2:
+        raise NotAssemblable("the three positions lie on one line")
+    a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
+    return ((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / det,
+            (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / det)
