@@ -1,0 +1,171 @@
+"""Flywheels (course text chapter 3): plain functions over SI floats, no I/O, no randomness.
+
+A flywheel stores the energy a machine receives faster than it spends and gives it back
+when it spends faster. Between the greatest and least speed of a cycle, ω₁ and ω₂, it
+gives up the maximum fluctuation of energy
+
+    ΔE = ½ I (ω₁² − ω₂²) = I ω² C_s          (eqs 3.1-3.5)
+
+with ω = (ω₁ + ω₂)/2 the mean speed and C_s = (ω₁ − ω₂)/ω the coefficient of fluctuation
+of speed: the *total* band, so "within ±0.5 % of the mean speed" is C_s = 0.01.
+
+The fluctuation of energy comes from a turning-moment diagram: as loops of measured area
+(Example 3.1), as a piecewise-linear torque against time or angle (Example 3.2), or as
+an equation in the crank angle (Problems 3.2, 3.5, `analytic.py`'s closed-form integral).
+"""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+#: Below this fraction of the largest loop, a cumulative energy is taken as exactly zero.
+ZERO = 1e-12
+
+
+def omega(rpm: float) -> float:
+    """rpm to rad/s: ω = 2πN/60."""
+    return 2.0 * math.pi * rpm / 60.0
+
+
+def energy_per_area(torque_scale: float, angle_scale: float) -> float:
+    """Energy one unit of diagram area stands for: (torque per unit height) × (radians per unit length)."""
+    return torque_scale * angle_scale
+
+
+def crossing_energies(signed_areas: Sequence[float]) -> list[float]:
+    """The energy at each crossing of the torque curve and the mean line, the first taken as zero:
+    E_A = 0, E_B = a₁, E_C = a₁ + a₂, ... (areas above the line positive, below negative).
+
+    Over a cycle the loops above and below balance, so the last crossing returns to zero.
+    """
+    levels = [0.0]
+    for area in signed_areas:
+        levels.append(levels[-1] + area)
+    scale = max((abs(a) for a in signed_areas), default=0.0)
+    if abs(levels[-1]) > ZERO * max(scale, 1.0) * len(signed_areas):
+        raise ValueError(f"the loops do not close the cycle: they sum to {levels[-1]:g}, not zero")
+    levels[-1] = 0.0
+    return levels
+
+
+def alternate(areas: Sequence[float], first_above: bool) -> list[float]:
+    """Loop areas (all positive) as signed areas, alternately above (+) and below (−) the line."""
+    sign = 1.0 if first_above else -1.0
+    return [area * sign * (-1.0) ** i for i, area in enumerate(areas)]
+
+
+def fluctuation_from_areas(signed_areas: Sequence[float]) -> tuple[float, int, int]:
+    """(greatest − least crossing energy, index of the greatest, index of the least).
+
+    The greatest energy is where the speed is greatest, the least where it is least; the
+    first of equal crossings is named (the last crossing repeats the first and is never named).
+    """
+    levels = crossing_energies(signed_areas)[:-1]
+    high = max(range(len(levels)), key=lambda i: (levels[i], -i))
+    low = min(range(len(levels)), key=lambda i: (levels[i], i))
+    return levels[high] - levels[low], high, low
+
+
+def fluctuation_of_energy(inertia: float, mean_omega: float, cs: float) -> float:
+    """ΔE = I ω² C_s (eq 3.5)."""
+    return inertia * mean_omega ** 2 * cs
+
+
+def coefficient_of_fluctuation(delta_e: float, inertia: float, mean_omega: float) -> float:
+    """C_s = ΔE / (I ω²) (eq 3.5 solved for C_s)."""
+    return delta_e / (inertia * mean_omega ** 2)
+
+
+def inertia_for(delta_e: float, mean_omega: float, cs: float) -> float:
+    """The moment of inertia that holds the speed to the band C_s: I = ΔE / (ω² C_s)."""
+    return delta_e / (mean_omega ** 2 * cs)
+
+
+def extreme_speeds(mean_omega: float, cs: float) -> tuple[float, float]:
+    """(ω₁, ω₂) = ω (1 ± C_s/2): the band is centred on the mean speed (eqs 3.2, 3.4)."""
+    return mean_omega * (1.0 + cs / 2.0), mean_omega * (1.0 - cs / 2.0)
+
+
+def rim_mass(inertia: float, mean_radius: float) -> float:
+    """Mass of a rim whose inertia is I, all of it at the mean radius (arms neglected): m = I / R²."""
+    return inertia / mean_radius ** 2
+
+
+def rim_section(mass: float, density: float, mean_radius: float, width_per_thickness: float) -> tuple[float, float]:
+    """(thickness, width) of a rectangular rim section: m = ρ · 2πR · b t with b = k t."""
+    area = mass / (density * 2.0 * math.pi * mean_radius)
+    thickness = math.sqrt(area / width_per_thickness)
+    return thickness, width_per_thickness * thickness
+
+
+# ---- a torque given as a closed polyline over one period (against time or angle) -------------
+
+
+def polyline_integral(points: Sequence[tuple[float, float]]) -> float:
+    """∫ y dx of straight segments through `points` (x increasing): the trapezium rule is exact."""
+    return sum((x1 - x0) * (y0 + y1) / 2.0 for (x0, y0), (x1, y1) in zip(points, points[1:]))
+
+
+def polyline_mean(points: Sequence[tuple[float, float]]) -> float:
+    """The mean height of a polyline over its whole span."""
+    return polyline_integral(points) / (points[-1][0] - points[0][0])
+
+
+def level_crossings(points: Sequence[tuple[float, float]], level: float) -> list[float]:
+    """x where the polyline crosses the height `level` (linear interpolation on each segment)."""
+    out = []
+    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+        if (y0 - level) * (y1 - level) < 0:
+            out.append(x0 + (x1 - x0) * (level - y0) / (y1 - y0))
+    return out
+
+
+def polyline_swing(points: Sequence[tuple[float, float]], level: float) -> float:
+    """Greatest minus least of the running integral of (y − level): the fluctuation of energy
+    when y is the torque a machine needs and `level` the constant torque that drives it
+    (in N·m·s against time; multiply by ω for joules)."""
+    running, best, worst = 0.0, 0.0, 0.0
+    xs = sorted({x for x, _ in points} | set(level_crossings(points, level)))
+    heights = [_height(points, x) for x in xs]
+    for (x0, y0), (x1, y1) in zip(zip(xs, heights), zip(xs[1:], heights[1:])):
+        running += (x1 - x0) * ((y0 + y1) / 2.0 - level)
+        best, worst = max(best, running), min(worst, running)
+    return best - worst
+
+
+def _height(points: Sequence[tuple[float, float]], x: float) -> float:
+    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+        if x0 <= x <= x1:
+            return y0 if x1 == x0 else y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    raise ValueError(f"{x} lies outside the polyline")
+
+
+# ---- presses and starting ------------------------------------------------------------------
+
+
+def cycle_time(energy_per_cycle: float, power: float) -> float:
+    """The shortest cycle a motor of constant power can feed: t = E / P (Example 3.3)."""
+    return energy_per_cycle / power
+
+
+def flywheel_share(energy: float, power: float, duration: float) -> float:
+    """Energy the flywheel gives up during an operation the motor feeds at once: E − P t."""
+    return energy - power * duration
+
+
+def speed_after(omega1: float, energy_given: float, inertia: float) -> float:
+    """ω₂ after the flywheel gives up ΔE: ½ I (ω₁² − ω₂²) = ΔE (eq 3.1)."""
+    remaining = omega1 ** 2 - 2.0 * energy_given / inertia
+    if remaining <= 0:
+        raise ValueError("the flywheel would stop: it does not hold that much energy")
+    return math.sqrt(remaining)
+
+
+def kinetic_energy(inertia: float, omega_: float) -> float:
+    """½ I ω²."""
+    return 0.5 * inertia * omega_ ** 2
+
+
+def work_per_cycle(power: float, mean_omega: float, cycle_angle: float = 2.0 * math.pi) -> float:
+    """Work a steady engine does in one cycle of `cycle_angle` radians of the crank: P θ / ω."""
+    return power * cycle_angle / mean_omega

@@ -1,0 +1,211 @@
+"""Flywheel physics (exgen.mechanics.flywheels, .turning_moment) against chapter 3 and against
+numerical integration.
+
+Each textbook value is recomputed here from the data as printed; where the text's arithmetic
+slips, the test holds the correct value and says what was printed.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from exgen.mechanics import flywheels as fw
+from exgen.mechanics.turning_moment import (TrigTorque, crossings, energy_swing, single_harmonic_crossings,
+                                            single_harmonic_swing)
+
+
+def test_rpm_to_rad_s():
+    assert fw.omega(60) == pytest.approx(2 * math.pi)
+    assert fw.omega(1500) == pytest.approx(157.08, abs=5e-3)  # Example 3.2, as its first line prints
+
+
+def test_example_3_1_crossings_and_fluctuation():
+    signed = fw.alternate([295, 685, 40, 340, 960, 270], first_above=True)
+    assert signed == [295, -685, 40, -340, 960, -270]
+    assert fw.crossing_energies(signed) == [0, 295, -390, -350, -690, 270, 0]   # A..G, as printed
+    swing, high, low = fw.fluctuation_from_areas(signed)
+    assert (swing, "ABCDEFG"[high], "ABCDEFG"[low]) == (985, "B", "E")
+    per_mm2 = fw.energy_per_area(5.0, math.radians(1.0))
+    assert per_mm2 == pytest.approx(math.pi / 36)
+    delta_e = swing * per_mm2
+    # printed 85.96 J, then carried into the last line as 85.97 J: the first is right
+    assert delta_e == pytest.approx(85.96, abs=5e-3)
+    inertia = 36 * 0.15 ** 2                       # printed "0.81 kg/m²": the unit is kg·m²
+    assert inertia == pytest.approx(0.81)
+    cs = fw.coefficient_of_fluctuation(delta_e, inertia, fw.omega(1800))
+    assert cs == pytest.approx(0.002987, abs=5e-7)  # printed 0.003 or 0.3 %
+    assert fw.fluctuation_of_energy(inertia, fw.omega(1800), cs) == pytest.approx(delta_e)
+
+
+def test_problem_3_1_rim():
+    signed = [-35, 410, -285, 325, -335, 260, -365, 285, -260]
+    assert signed == fw.alternate([35, 410, 285, 325, 335, 260, 365, 285, 260], first_above=False)
+    assert fw.crossing_energies(signed) == [0, -35, 375, 90, 415, 80, 340, -25, 260, 0]
+    swing, high, low = fw.fluctuation_from_areas(signed)
+    assert (swing, high, low) == (450, 4, 1)
+    delta_e = swing * fw.energy_per_area(70, math.radians(4.5))
+    assert delta_e == pytest.approx(2474.00, abs=0.005)
+    inertia = fw.inertia_for(delta_e, fw.omega(900), 0.02)
+    mass = fw.rim_mass(inertia, 0.325)
+    assert mass == pytest.approx(131.84, abs=0.005)
+    thickness, width = fw.rim_section(mass, 7200, 0.325, 2.0)
+    assert thickness == pytest.approx(0.06696, abs=5e-6) and width == pytest.approx(2 * thickness)
+    assert 7200 * 2 * math.pi * 0.325 * thickness * width == pytest.approx(mass)
+
+
+def test_loops_that_do_not_close_are_refused():
+    with pytest.raises(ValueError, match="do not close"):
+        fw.crossing_energies([100, -50])
+
+
+def test_extreme_speeds_are_centred_on_the_mean():
+    high, low = fw.extreme_speeds(100.0, 0.02)
+    assert (high, low) == pytest.approx((101.0, 99.0))
+    assert (high - low) / ((high + low) / 2) == pytest.approx(0.02)
+    # eq 3.1 and eq 3.5 agree exactly when ω is the mean of ω₁ and ω₂
+    assert 0.5 * 3.0 * (high ** 2 - low ** 2) == pytest.approx(fw.fluctuation_of_energy(3.0, 100.0, 0.02))
+
+
+EXAMPLE_3_2 = [(0.0, 5.5), (0.5, 5.5), (0.7, 44.0), (0.9, 44.0), (1.1, 5.5), (2.0, 5.5)]
+
+
+def test_example_3_2_torque_time():
+    w = fw.omega(1500)
+    work = fw.polyline_integral(EXAMPLE_3_2) * w
+    assert work == pytest.approx(4146.912, abs=0.01)       # printed from ω = 157.08 rad/s
+    mean = fw.polyline_mean(EXAMPLE_3_2)
+    # Erratum: the text divides by 2 x 157.8 (a typo for 157.08 rad/s) and prints 13.14 N·m
+    assert mean == pytest.approx(13.2)
+    assert mean * w == pytest.approx(2073.5, abs=0.05)      # printed 2073 W (13.14 x 157.8 happens to agree)
+    assert fw.level_crossings(EXAMPLE_3_2, mean) == pytest.approx([0.54, 1.06])   # x and y, as printed
+    delta_e = fw.polyline_swing(EXAMPLE_3_2, mean) * w
+    # Erratum: printed 1753.09 J from 157.8 rad/s and 13.14 N·m
+    assert delta_e == pytest.approx(1741.70, abs=5e-3)
+    cs = fw.coefficient_of_fluctuation(delta_e, 18 * 0.25 ** 2, w)
+    # Erratum: printed 0.0626 (6.26 %) from 1753.09 J and 157.8 rad/s; the data give 6.27 %
+    assert cs == pytest.approx(0.062745, abs=5e-7)
+
+
+def test_polyline_swing_counts_every_loop():
+    # two pulses: the running energy falls below its start twice; the swing is the largest excursion
+    points = [(0, 0.0), (1, 10.0), (2, 0.0), (3, 0.0), (4, 10.0), (5, 0.0), (6, 0.0)]
+    mean = fw.polyline_mean(points)
+    xs = np.linspace(0, 6, 600001)
+    running = np.concatenate([[0.0], np.cumsum(np.diff(xs) * (np.interp(xs[:-1], *zip(*points)) +
+                                                          np.interp(xs[1:], *zip(*points))) / 2 - np.diff(xs) * mean)])
+    assert fw.polyline_swing(points, mean) == pytest.approx(running.max() - running.min(), rel=1e-6)
+
+
+def test_example_3_3_press():
+    t = fw.cycle_time(4750, 2250)
+    assert t == pytest.approx(2.111, abs=5e-4)
+    assert math.floor(3600 / t) == 1705
+    given = fw.flywheel_share(4750, 2250, 0.75)
+    assert given == 3062.5
+    w1 = fw.omega(250)
+    w2 = fw.speed_after(w1, given, 50)
+    assert w1 == pytest.approx(26.18, abs=5e-3) and w2 == pytest.approx(23.73, abs=5e-3)
+    assert w1 - w2 == pytest.approx(2.45, abs=5e-3)
+    with pytest.raises(ValueError, match="stop"):
+        fw.speed_after(w1, 1e6, 50)
+
+
+def test_problem_3_3_starting():
+    inertia = 2450 * 1.0 ** 2
+    alpha = 1250 / inertia
+    assert alpha == pytest.approx(0.5102, abs=5e-5)
+    assert fw.kinetic_energy(inertia, alpha * 10) == pytest.approx(1250 * 0.5 * alpha * 10 ** 2)  # = work done
+    assert fw.kinetic_energy(inertia, alpha * 10) == pytest.approx(31888, abs=1)
+
+
+def test_problem_3_4_energy_coefficient():
+    w = fw.omega(100)
+    work = fw.work_per_cycle(305e3, w)
+    assert work == pytest.approx(183_000)
+    inertia = fw.inertia_for(0.1 * work, w, 0.01)      # ±0.5 % is a total band of 1 %
+    assert fw.rim_mass(inertia, 2.0) == pytest.approx(4171.90, abs=0.005)
+
+
+# ---- the analytic turning moment ------------------------------------------------------------------
+
+
+def _numeric_swing(engine: TrigTorque, resisting: TrigTorque, period: float, n: int = 400_001) -> float:
+    """Fluctuation of energy by brute force: the trapezium rule on a fine grid, no closed form."""
+    theta = np.linspace(0.0, period, n)
+    excess = np.array([engine.at(t) - resisting.at(t) for t in theta])
+    running = np.concatenate([[0.0], np.cumsum((excess[1:] + excess[:-1]) / 2 * np.diff(theta))])
+    return float(running.max() - running.min())
+
+
+def test_problem_3_2_single_harmonic():
+    engine, resisting = TrigTorque(14500, ((2, 2300, -1900),)), TrigTorque(14500)
+    w = fw.omega(150)
+    assert engine.mean * w == pytest.approx(227_765, abs=1)       # 227.77 kW
+    swing = energy_swing(engine, resisting)
+    assert swing.delta == pytest.approx(math.hypot(2300, 1900)) == single_harmonic_swing(2300, -1900, 2)
+    first, second = single_harmonic_crossings(2300, -1900, 2)
+    assert math.degrees(first) == pytest.approx(19.78, abs=5e-3) and math.degrees(second) == pytest.approx(109.78, abs=5e-3)
+    assert engine.minus(resisting).work(first, second) == pytest.approx(swing.delta)
+    inertia = fw.inertia_for(swing.delta, w, 0.01)                 # ±0.5 %: a 1 % band
+    assert inertia == pytest.approx(1209.1, abs=0.05)
+    alpha = (engine.at(math.radians(30)) - resisting.at(math.radians(30))) / inertia
+    assert alpha == pytest.approx(0.8617, abs=5e-5)
+
+
+def test_problem_3_5_constant_and_fluctuating_resistance():
+    engine = TrigTorque(5000, ((3, 1500, 0),))
+    w = fw.omega(300)
+    assert engine.mean * w == pytest.approx(157_080, abs=1)
+    constant = energy_swing(engine, TrigTorque(5000))
+    assert constant.delta == pytest.approx(1000)                   # 2 x 1500 / 3
+    assert 100 * fw.coefficient_of_fluctuation(constant.delta, 1000, w) == pytest.approx(0.1013, abs=5e-5)
+    varying = energy_swing(engine, TrigTorque(5000, ((1, 600, 0),)))
+    # crossings where 1500 sin 3θ = 600 sin θ: sin²θ = 0.65; E = 600 cos θ − 500 cos 3θ − 100
+    # there cos θ = ±√0.35 and cos 3θ = cos θ (4 cos² θ − 3) = −1.6 cos θ, so E = ±1400 √0.35 − 100
+    assert varying.high[1] == pytest.approx(1400 * math.sqrt(0.35) - 100) == pytest.approx(728.25, abs=0.005)
+    assert varying.low[1] == pytest.approx(-1400 * math.sqrt(0.35) - 100) == pytest.approx(-928.25, abs=0.005)
+    assert varying.delta == pytest.approx(1656.50, abs=0.01)
+    assert 100 * fw.coefficient_of_fluctuation(varying.delta, 1000, w) == pytest.approx(0.16784, abs=5e-5)
+
+
+@pytest.mark.parametrize("engine, resisting", [
+    (TrigTorque(14500, ((2, 2300, -1900),)), TrigTorque(14500)),
+    (TrigTorque(5000, ((3, 1500, 0),)), TrigTorque(5000, ((1, 600, 0),))),
+    (TrigTorque(800, ((1, 300, 120), (2, -250, 60), (4, 90, -40))), TrigTorque(800, ((1, 50, 0),))),
+    (TrigTorque(2000, ((6, 0, 900),)), TrigTorque(2000, ((2, 400, 300),))),
+])
+def test_closed_form_swing_agrees_with_numerical_integration(engine, resisting):
+    swing = energy_swing(engine, resisting)
+    period = engine.minus(resisting).period
+    assert swing.delta == pytest.approx(_numeric_swing(engine, resisting, period), rel=1e-6)
+
+
+@pytest.mark.parametrize("theta0, theta1", [(0.0, 1.0), (0.3, 2.9), (-1.0, 4.0)])
+def test_closed_form_work_agrees_with_numerical_integration(theta0, theta1):
+    torque = TrigTorque(700, ((1, 120, -40), (3, 55, 80)))
+    grid = np.linspace(theta0, theta1, 200_001)
+    values = np.array([torque.at(t) for t in grid])
+    numeric = float(np.sum((values[1:] + values[:-1]) / 2 * np.diff(grid)))
+    assert torque.work(theta0, theta1) == pytest.approx(numeric, rel=1e-9)
+
+
+def test_crossings_are_where_the_torques_meet():
+    excess = TrigTorque(5000, ((3, 1500, 0),)).minus(TrigTorque(5000, ((1, 600, 0),)))
+    found = crossings(excess)
+    assert len(found) == 6
+    assert all(abs(excess.at(t)) < 1e-9 for t in found)
+
+
+def test_unequal_mean_torques_have_no_cycle():
+    with pytest.raises(ValueError, match="mean"):
+        energy_swing(TrigTorque(5000, ((3, 1500, 0),)), TrigTorque(4000))
+
+
+def test_harmonics_are_whole_numbers():
+    with pytest.raises(ValueError, match="whole number"):
+        TrigTorque(1.0, ((1.5, 1.0, 0.0),))
+
+
+def test_period_is_set_by_the_common_harmonic():
+    assert TrigTorque(0, ((2, 1, 0), (4, 0, 1))).period == pytest.approx(math.pi)
+    assert TrigTorque(0, ((3, 1, 0), (1, 1, 0))).period == pytest.approx(2 * math.pi)
