@@ -17,6 +17,7 @@ kept as the text typed; a part whose answer is not a single value is "unreadable
 from __future__ import annotations
 
 import re
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -25,7 +26,8 @@ import yaml
 from exgen.assignment import Sheet
 from exgen.errors import SubmissionError
 
-from .formats import LOADERS, SUFFIXES, Loaded, read_text
+from .echo import shown
+from .formats import LOADERS, READ_SECONDS, SUFFIXES, Loaded, file_kind, read_text
 
 HEADER_KEYS = ("assignment", "student", "code")
 MAX_HEADER_LENGTH = 200
@@ -117,18 +119,20 @@ def _unit_hint(part) -> str:
 
 # ---- reading what comes back --------------------------------------------------------------------
 
-def read_submission(path: Path) -> Submission:
-    """Read an answer file (.yaml/.yml, .json or .csv); SubmissionError if it cannot be read at all."""
+def read_submission(path: Path, seconds: float = READ_SECONDS) -> Submission:
+    """Read an answer file (.yaml/.yml, .json or .csv) in at most about `seconds`; SubmissionError if it
+    cannot be read at all."""
     path = Path(path)
-    kind = SUFFIXES.get(path.suffix.lower())
+    kind = file_kind(path)
     if kind is None:
         raise SubmissionError(path, f"not an answer file: expected {', '.join(sorted(SUFFIXES))}")
-    loaded = LOADERS[kind](path, read_text(path))
+    deadline = time.perf_counter() + seconds
+    loaded = LOADERS[kind](path, read_text(path), deadline)
     return _submission(path, loaded)
 
 
 def _submission(path: Path, loaded: Loaded) -> Submission:
-    data, warnings = loaded.data, list(loaded.warnings)
+    data, warnings = loaded.data, loaded.all_warnings()
     if not isinstance(data, dict):
         raise SubmissionError(path, f"the file holds {_what(data)}; it must be a mapping with "
                                     "`student`, `code` and `answers`", loaded.line())

@@ -16,6 +16,7 @@ from exgen.errors import ExgenError
 from exgen.variant import Variant
 
 from .answers import Submission
+from .echo import shown
 from .collect import Entry, collect
 from .marking import QuestionMarker
 from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, UNREADABLE_FILE, BatchResult, Column, FileProblem,
@@ -24,8 +25,9 @@ from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, UNREADABLE_FILE, BatchR
 CODE_MISMATCH = ("This answer file carries the sheet code {given}, but your sheet's code is {code}: it may "
                  "belong to another sheet. It was graded against your own sheet.")
 OTHER_ASSIGNMENT = "This answer file is for the assignment {given!r}, not {expected!r}; it was graded as {expected!r}."
-UNKNOWN_QUESTION = "The answer file answers {slot!r}, which is not a question on your sheet; ignored."
-UNKNOWN_PART = "The answer file answers part {part!r} of {slot}, which has no such part; ignored."
+UNKNOWN_QUESTION = "The answer file answers {slots}, which your sheet does not ask; ignored."
+UNKNOWN_PART = "The answer file answers {parts} of {slot}, which has no such part; ignored."
+LISTED = 5  # names of unknown questions or parts quoted in one note; the rest are counted
 NO_FILE = "No answer file was handed in."
 UNREADABLE = "Your answer file could not be read: {reason}"
 NO_SHEET = "The sheet could not be rebuilt for grading: {reason}"
@@ -48,12 +50,15 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
         used.add(_norm(key))
         given, trouble = _by_key(answers.get(_norm(key), {})), _by_key(problems.get(_norm(key), {}))
         parts = {_norm(p.id): p.id for p in question.variant.template.parts}
-        warnings += [UNKNOWN_PART.format(part=k[:20], slot=question.slot) for k in {**given, **trouble}
-                     if k and k not in parts]
+        unknown = [k for k in {**given, **trouble} if k and k not in parts]
+        if unknown:
+            warnings.append(UNKNOWN_PART.format(parts=_listed(unknown, "part"), slot=question.slot))
         results.append(QuestionMarker(question).mark(
             {parts[k]: v for k, v in given.items() if k in parts},
             {parts.get(k, k): v for k, v in trouble.items()}))
-    warnings += [UNKNOWN_QUESTION.format(slot=k[:20]) for k in {**answers, **problems} if k not in used]
+    unknown = [k for k in {**answers, **problems} if k not in used]
+    if unknown:
+        warnings.append(UNKNOWN_QUESTION.format(slots=_listed(unknown, "")))
     mismatch = bool(submission.code) and _norm(submission.code) != _norm(sheet.code)
     return SheetResult(sheet.student, GRADED, sheet.points, sheet.code, tuple(results), tuple(warnings),
                        submission.path, mismatch)
@@ -111,6 +116,16 @@ def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes
                            path=entry.path)
     result = grade_sheet(sheet, entry.submission)
     return dataclasses.replace(result, warnings=notes + result.warnings)
+
+
+def _listed(names: list[str], noun: str) -> str:
+    """"part 'x'", "parts 'x', 'y' and 3 more": at most LISTED names, each shortened."""
+    quoted = [repr(shown(n, 20)) for n in names[:LISTED]]
+    more = len(names) - LISTED
+    text = ", ".join(quoted) + (f" and {more} more" if more > 0 else "")
+    if len(quoted) > 1 and more <= 0:
+        text = ", ".join(quoted[:-1]) + " and " + quoted[-1]
+    return f"{noun}{'s' if len(names) > 1 else ''} {text}" if noun else text
 
 
 def _norm(key: str) -> str:

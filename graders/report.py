@@ -7,17 +7,22 @@ from __future__ import annotations
 
 import csv
 import html
-import re
 from collections import Counter
 from pathlib import Path
 
+from .echo import shown
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
                       SheetResult)
 
 MARK = {True: "\u2713", False: "\u2717"}
 SHOWN_ANSWER_LENGTH = 60
+#: Any message or note on a page: long enough for every message exgen writes, short for echoed text.
+MESSAGE_LENGTH = 400
+#: Longest unbroken run of characters kept in a message (a quoted answer of 200,000 digits is one run).
+QUOTED_WORD = 48
+#: Notes shown on one feedback page; the rest are counted.
+NOTES_SHOWN = 10
 COMMON_MISTAKES = 3
-_CONTROL = re.compile(r"[\x00-\x1f\x7f-\x9f\u2028\u2029]")
 _LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
 
@@ -72,8 +77,10 @@ def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
              f"Student: {who}" + (f" · Sheet code: {sheet.code}" if sheet.code else ""),
              f"Total: **{_num(sheet.points)} / {_num(sheet.max_points)}** ({sheet.percent:.1f} %)"
              + ("" if sheet.status == GRADED else f" · {sheet.status}"), ""]
-    for warning in sheet.warnings:
+    for warning in sheet.warnings[:NOTES_SHOWN]:
         lines += [f"> **Note:** {_escape(warning)}", ""]
+    if len(sheet.warnings) > NOTES_SHOWN:
+        lines += [f"> **Note:** ... and {len(sheet.warnings) - NOTES_SHOWN} more notes like these.", ""]
     for question in sheet.questions:
         lines += [f"## Q{question.number}. {_escape(question.title)} ({_num(question.points)} / "
                   f"{_num(question.max_points)})", ""]
@@ -85,7 +92,7 @@ def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
 def _part_block(part: PartResult) -> list[str]:
     given = f"`{_shown(part.given)}`" if part.given.strip() else "(blank)"
     return [
-        f"**({part.part_id}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask)}  ",
+        f"**({part.part_id}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask, 2000)}  ",
         f"Your answer: {given} · expected: {part.expected}  ",
         _escape(_sentence(part.message)), "",
     ]
@@ -93,10 +100,7 @@ def _part_block(part: PartResult) -> list[str]:
 
 def _shown(text: str, limit: int = SHOWN_ANSWER_LENGTH) -> str:
     """A student's text, safe inside a Markdown code span and as HTML: one line, short, no backticks or tags."""
-    text = " ".join(_CONTROL.sub(" ", text).split()).translate(_LOOK_ALIKES)
-    if len(text) > limit:
-        text = text[: limit - 1] + "\u2026"
-    return text or " "
+    return shown(text, limit).translate(_LOOK_ALIKES) or " "
 
 
 def _where(path: Path, base: Path | None) -> str:
@@ -106,8 +110,9 @@ def _where(path: Path, base: Path | None) -> str:
         return str(path)
 
 
-def _escape(text: str) -> str:
-    return html.escape(" ".join(_CONTROL.sub(" ", str(text)).split()), quote=False)
+def _escape(text: str, limit: int = MESSAGE_LENGTH) -> str:
+    """Any text on a page (messages quote what students typed): one line, capped, HTML-escaped."""
+    return html.escape(shown(text, limit, word=QUOTED_WORD), quote=False)
 
 
 def _sentence(message: str) -> str:

@@ -1,0 +1,25 @@
+"""Student text, made safe to echo anywhere (feedback, reports, messages): one line, no control or
+invisible formatting characters (bidi overrides such as U+202E reorder what a reader sees), short."""
+from __future__ import annotations
+
+import re
+import unicodedata
+
+#: Unicode categories never echoed: controls, invisible formatting (bidi, zero-width), surrogates,
+#: private use, unassigned, and line or paragraph separators.
+_DROPPED = {"Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp"}
+ELLIPSIS = "\u2026"
+
+
+def shown(text, limit: int = 80, word: int | None = None) -> str:
+    """`text` as one line of at most `limit` characters, without characters that hide or reorder text.
+    With `word`, any run of more than `word` non-blank characters is cut short first, so a message
+    quoting a huge answer keeps its own words ("cannot read '9999…' as a number ...")."""
+    text = str(text)
+    if word:
+        text = re.sub(rf"\S{{{word + 1},}}", lambda m: m.group()[:word] + ELLIPSIS, text)
+    if len(text) > 8 * limit:  # never scan more than needed: a 1 MB answer costs what a short one does
+        text = text[: 8 * limit] + ELLIPSIS
+    cleaned = "".join(" " if unicodedata.category(c) in _DROPPED else c for c in text)
+    cleaned = " ".join(cleaned.split())
+    return cleaned if len(cleaned) <= limit else cleaned[: limit - 1].rstrip() + ELLIPSIS
