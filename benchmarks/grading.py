@@ -8,7 +8,8 @@ import time
 from pathlib import Path
 from exgen.bank import load_bank
 from exgen.assignment import load_assignment, Student, build_sheet
-from graders.answers import answer_form, read_submission
+from exgen.render.answer_form import answer_form
+from graders.answers import read_submission
 from graders.grade import grade_batch, grade_sheet
 from graders.report import write_results
 

@@ -10,22 +10,22 @@ import importlib
 import os
 from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
-from functools import lru_cache
+from functools import lru_cache, partial
 from importlib import resources
 from pathlib import Path
 
 import yaml
 
 from . import expr
+from .answertypes import answer_type, names as answer_type_names
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
-from .template import ANSWER_TYPES, MistakeSpec, ParamSpec, PartSpec, Template, Tolerance
+from .template import MistakeSpec, ParamSpec, PartSpec, Template
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure"}
 PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value"}
-PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "choices", "angle"}
-TOL_KEYS = {"rel", "abs", "sig"}
+PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
 MAX_VALUES = 100_000
 
 
@@ -136,6 +136,9 @@ class _Reader:
             else:
                 break
         return line
+
+    def error_below(self, keypath: tuple, keys: tuple, message: str) -> None:
+        self.error(keypath + keys, message)
 
     def unknown_keys(self, mapping: dict, allowed: set, keypath: tuple) -> None:
         for key in mapping:
@@ -281,25 +284,25 @@ class _Reader:
             if not isinstance(spec, dict):
                 self.error(where, "must be a mapping with id, ask and answer")
                 continue
-            self.unknown_keys(spec, PART_KEYS, where)
+            kind = spec.get("type", "number")
+            if kind not in answer_type_names():
+                self.error(where + ("type",), f"{kind!r} is not one of {', '.join(answer_type_names())}")
+                kind = "number"
+            answers = answer_type(kind)
+            self.unknown_keys(spec, PART_KEYS | set(answers.part_keys), where)
             part_id = str(spec.get("id", ""))
             for key in ("id", "ask", "answer"):
                 if not spec.get(key):
                     self.error(where + (key,), "is required")
             if part_id in seen:
                 self.error(where + ("id",), f"part {part_id!r} appears twice")
-            kind = spec.get("type", "number")
-            if kind not in ANSWER_TYPES:
-                self.error(where + ("type",), f"{kind!r} is not one of {', '.join(ANSWER_TYPES)}")
             uses = tuple(str(u) for u in spec.get("uses") or ())
             for used in uses:
                 if used not in seen:
                     self.error(where + ("uses",), f"{used!r} is not an earlier part")
-            choices = tuple(str(c) for c in spec.get("choices") or ())
-            if kind == "choice" and not choices:
-                self.error(where + ("choices",), "a choice answer needs its list of choices")
-            if kind == "polar" and not spec.get("angle"):
-                self.error(where + ("angle",), "a polar answer needs `angle:`, the step holding its angle")
+            report = partial(self.error_below, where)
+            options = answers.load_options(spec, report)
+            tol = answers.load_tolerance(spec.get("tol"), report)
             self.check_text(str(spec.get("ask", "")), names, where + ("ask",))
             points = spec.get("points", 1)
             if isinstance(points, bool) or not isinstance(points, (int, float)) or points <= 0:
@@ -307,34 +310,11 @@ class _Reader:
                 points = 1
             out.append(PartSpec(
                 id=part_id, ask=str(spec.get("ask", "")), answer=str(spec.get("answer", "")),
-                unit=str(spec.get("unit", "")), type=kind, tol=self.tolerance(spec.get("tol"), kind, where),
-                points=float(points), mistakes=self.mistakes(spec.get("mistakes"), where),
-                uses=uses, choices=choices, angle=str(spec.get("angle") or ""),
+                unit=str(spec.get("unit", "")), type=kind, tol=tol, points=float(points),
+                mistakes=self.mistakes(spec.get("mistakes"), where), uses=uses, options=options,
             ))
             seen.append(part_id)
         return tuple(out)
-
-    def tolerance(self, spec, kind: str, where) -> Tolerance:
-        from .template import DEFAULT_ANGLE_ABS_TOL_DEG, DEFAULT_REL_TOL
-
-        defaults = {"rel": 0.0, "abs": DEFAULT_ANGLE_ABS_TOL_DEG} if kind == "angle" else {"rel": DEFAULT_REL_TOL, "abs": 0.0}
-        if kind == "polar":
-            defaults = {"rel": DEFAULT_REL_TOL, "abs": DEFAULT_ANGLE_ABS_TOL_DEG}
-        if kind in ("integer", "choice"):
-            defaults = {"rel": 0.0, "abs": 0.0}
-        if spec is None:
-            return Tolerance(**defaults)
-        if not isinstance(spec, dict):
-            self.error(where + ("tol",), "must be a mapping such as {rel: 0.01}")
-            return Tolerance(**defaults)
-        self.unknown_keys(spec, TOL_KEYS, where + ("tol",))
-        values = {**defaults, **{k: v for k, v in spec.items() if k in TOL_KEYS}}
-        for key, value in values.items():
-            if value is not None and (isinstance(value, bool) or not isinstance(value, (int, float)) or value < 0):
-                self.error(where + ("tol", key), "must be a number >= 0")
-                return Tolerance(**defaults)
-        return Tolerance(rel=float(values["rel"]), abs=float(values["abs"]),
-                         sig=int(values["sig"]) if values.get("sig") else None)
 
     def mistakes(self, data, where) -> tuple[MistakeSpec, ...]:
         if data is None:

@@ -54,8 +54,16 @@ class DrawError(ExgenError, RuntimeError):
         )
 
 
-class QuantityError(ExgenError, ValueError):
+class FormatProblem(ExgenError, ValueError):
+    """An answer that cannot be read: a format problem, told apart from a wrong answer (no marks, no penalty)."""
+
+
+class QuantityError(FormatProblem):
     """Text that cannot be read as a quantity (a format problem, not a wrong answer)."""
+
+
+class WrongKind(ExgenError, ValueError):
+    """A readable answer of the wrong kind (a length where a force is asked): wrong, and said why."""
 
 
 class DimensionError(ExgenError, ValueError):

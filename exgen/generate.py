@@ -20,6 +20,7 @@ from typing import Callable, Iterable
 from .assignment import Assignment, Sheet, Student, build_sheet
 from .bank import Bank
 from .manifest import build_manifest, write_manifest
+from .render.answer_form import answer_form
 
 Progress = Callable[[Iterable, int, str], Iterable]
 
@@ -57,8 +58,6 @@ def write_figures(sheet: Sheet, folders: list[Path]) -> dict[str, str]:
 
 def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
     """The student's folder (sheet, form, figures) and the instructor's key folder."""
-    from graders.answers import answer_form
-
     from .render.markdown import key_markdown, sheet_markdown
 
     student_dir = out / "students" / sheet.student.id

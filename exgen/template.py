@@ -7,13 +7,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from decimal import Decimal
 from pathlib import Path
-
-ANSWER_TYPES = ("number", "angle", "integer", "choice", "polar")
-
-#: Default grading rules (DESIGN.md): 1 % relative, no absolute floor, angles within 0.5 deg.
-#: A polar answer (a magnitude at an angle) uses `rel` for the magnitude and `abs` (deg) for the angle.
-DEFAULT_REL_TOL = 0.01
-DEFAULT_ANGLE_ABS_TOL_DEG = 0.5
+from typing import Any, Mapping
 
 
 @dataclass(frozen=True)
@@ -49,7 +43,11 @@ class ParamSpec:
 
 @dataclass(frozen=True)
 class Tolerance:
-    rel: float = DEFAULT_REL_TOL
+    """How far an answer may be from the key: `rel` of it, within `abs` of it, or (with `sig`) to that
+    many significant figures. What each means for a type, and its default, is the type's (exgen.answertypes);
+    the defaults here are a number's (1 %)."""
+
+    rel: float = 0.01
     abs: float = 0.0
     sig: int | None = None
 
@@ -67,6 +65,9 @@ class MistakeSpec:
 
 @dataclass(frozen=True)
 class PartSpec:
+    """One question of a template: what is asked, the step that answers it, and how it is graded.
+    `options` holds what only its answer type reads (a choice's `choices`, a polar answer's `angle`)."""
+
     id: str
     ask: str
     answer: str
@@ -76,8 +77,10 @@ class PartSpec:
     points: float = 1.0
     mistakes: tuple[MistakeSpec, ...] = ()
     uses: tuple[str, ...] = ()
-    choices: tuple[str, ...] = ()
-    angle: str = ""  # polar answers: the step holding the angle (the magnitude is `answer`)
+    options: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self):
+        object.__setattr__(self, "options", dict(self.options))  # a copy: nobody else's dict to change
 
 
 @dataclass(frozen=True)

@@ -11,8 +11,9 @@ import math
 import time
 from dataclasses import dataclass, field
 
+from .answertypes import answer_type
 from .draw import failed_requirement
-from .errors import ExgenError
+from .errors import ExgenError, FormatProblem, WrongKind
 from .template import Template
 from .variant import Variant, answer_for, make_variant, rerun
 
@@ -80,15 +81,9 @@ def check_variant(variant: Variant) -> list[str]:
     if broken:
         problems.append(f"drawn values break {broken!r}")
     for part in variant.template.parts:
-        value = variant.answers[part.id].value
-        if part.type in ("number", "angle") and not (isinstance(value, float) and math.isfinite(value)):
-            problems.append(f"part {part.id}: answer {value!r} is not a finite number")
-        if part.type == "integer" and not isinstance(value, int):
-            problems.append(f"part {part.id}: answer {value!r} is not a whole number")
-        if part.type == "polar" and not (math.isfinite(value.magnitude) and math.isfinite(value.angle_deg)):
-            problems.append(f"part {part.id}: answer {value!r} is not finite")
-        if part.type == "choice" and value not in part.choices:
-            problems.append(f"part {part.id}: answer {value!r} is not one of {part.choices}")
+        problem = answer_type(part).problem(variant.answers[part.id].value, part)
+        if problem:
+            problems.append(f"part {part.id}: {problem}")
     problems += _check_ecf_identity(variant)
     problems += _check_key_grades_itself(variant)
     return problems
@@ -112,11 +107,19 @@ def _check_ecf_identity(variant: Variant) -> list[str]:
 
 
 def _check_key_grades_itself(variant: Variant) -> list[str]:
-    from graders.grade import grade_variant
-
-    result = grade_variant(variant, {pid: a.text for pid, a in variant.answers.items()})
-    return [f"part {r.part_id}: the key's own answer {r.given!r} scores {r.points}/{r.max_points} ({r.message})"
-            for r in result.parts if r.points < r.max_points]
+    """The key's printed answer, typed back, reads and is right: what a student copying it would score."""
+    problems = []
+    for part in variant.template.parts:
+        kind, answer = answer_type(part), variant.answers[part.id]
+        try:
+            right = kind.matches(kind.read(answer.text, part).value, answer.value, part)
+        except (FormatProblem, WrongKind) as exc:
+            problems.append(f"part {part.id}: the key's own answer {answer.text!r} cannot be read back ({exc})")
+            continue
+        if not right:
+            problems.append(f"part {part.id}: the key's own answer {answer.text!r} is not within "
+                            f"{kind.tolerance_text(part)} of {answer.value!r}")
+    return problems
 
 
 def _check_mistakes(template: Template, variants: list[Variant], report: Report) -> None:
@@ -136,10 +139,4 @@ def _check_mistakes(template: Template, variants: list[Variant], report: Report)
 
 
 def _coincides(answer, mistake, part) -> bool:
-    from graders.checks import for_part
-
-    if part.type == "polar":
-        return for_part(part)(mistake, answer)
-    if isinstance(answer, float) and isinstance(mistake, (int, float)):
-        return math.isclose(answer, mistake, rel_tol=max(part.tol.rel, 1e-9), abs_tol=part.tol.abs)
-    return answer == mistake
+    return answer_type(part).matches(mistake, answer, part)

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import importlib
-import math
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import lru_cache
@@ -10,6 +9,7 @@ from types import MappingProxyType
 from typing import Any, Mapping
 
 from . import units
+from .answertypes import answer_type
 from .derivation import Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw
@@ -42,27 +42,6 @@ class ParamValue:
 
 
 @dataclass(frozen=True)
-class Polar:
-    """A magnitude at an angle (a balancing mass-radius, a force with its direction).
-
-    Normalised so the magnitude is not negative and the angle (degrees) is in [0, 360):
-    "remove m at θ" is the same answer as "add m at θ + 180°".
-    """
-
-    magnitude: float
-    angle_deg: float
-
-    @classmethod
-    def of(cls, magnitude: float, angle_deg: float) -> "Polar":
-        if magnitude < 0:
-            magnitude, angle_deg = -magnitude, angle_deg + 180.0
-        return cls(magnitude, angle_deg % 360.0)
-
-    def text(self, unit: str) -> str:
-        return f"{units.format_quantity(self.magnitude, unit)} at {units.format_quantity(self.angle_deg, 'deg')}"
-
-
-@dataclass(frozen=True)
 class Answer:
     """The expected answer of a part, in the unit the sheet asks for."""
 
@@ -73,11 +52,7 @@ class Answer:
 
     @property
     def text(self) -> str:
-        if isinstance(self.value, float):
-            return units.format_quantity(self.value, self.part.unit)
-        if isinstance(self.value, Polar):
-            return self.value.text(self.part.unit)
-        return f"{self.value} {units.pretty_unit(self.part.unit)}".strip()
+        return answer_type(self.part).text(self.value, self.part)
 
 
 @dataclass(frozen=True)
@@ -164,52 +139,16 @@ def run_solver(template: Template, si: dict, overrides: dict | None = None, stri
 
 
 def answer_for(part: PartSpec, derivation: Derivation) -> Answer:
+    """The expected answer of a part, as its type reads it from the solver's steps."""
     if part.answer not in derivation:
         raise ExgenError(f"{part.answer!r} (answer of part {part.id}) is not a step the solver records")
     step = derivation[part.answer]
-    value = step.value
-    if part.type == "polar":
-        if part.angle not in derivation:
-            raise ExgenError(f"{part.angle!r} (angle of part {part.id}) is not a step the solver records")
-        return Answer(part, _polar(part, derivation, value, derivation[part.angle].value), step.value, step)
-    if part.type in ("number", "angle"):
-        if not (isinstance(value, (int, float)) and math.isfinite(value)):
-            raise InvalidDraw(f"part {part.id}: answer {value!r} is not a finite number")
-        value = units.convert(float(value), step.unit, part.unit)
-    return Answer(part, value, step.value, step)
-
-
-def _polar(part: PartSpec, derivation: Derivation, magnitude, angle) -> Polar:
-    """A polar answer in the asked unit, from SI magnitude and angle (rad)."""
-    if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in (magnitude, angle)):
-        raise InvalidDraw(f"part {part.id}: answer {magnitude!r} at {angle!r} is not finite")
-    size = units.convert(float(magnitude), derivation[part.answer].unit, part.unit)
-    return Polar.of(size, units.convert(float(angle), derivation[part.angle].unit, "deg"))
+    return Answer(part, answer_type(part).expected(part, derivation), step.value, step)
 
 
 def mistakes_for(part: PartSpec, derivation: Derivation) -> dict[str, Any]:
-    """Mistake values recorded on the answer's step (for a polar answer, also on its angle step),
-    in the asked unit. A polar mistake recorded on one step keeps the right value of the other."""
-    if part.type == "polar":
-        sizes = derivation.mistakes.get(part.answer, {})
-        angles = derivation.mistakes.get(part.angle, {})
-        right_size, right_angle = derivation[part.answer].value, derivation[part.angle].value
-        out = {}
-        for name in {**sizes, **angles}:
-            try:
-                out[name] = _polar(part, derivation, sizes.get(name, right_size), angles.get(name, right_angle))
-            except InvalidDraw:
-                continue
-        return out
-    found = derivation.mistakes.get(part.answer, {})
-    step_unit = derivation[part.answer].unit
-    out = {}
-    for name, value in found.items():
-        if isinstance(value, (int, float)) and math.isfinite(value) and part.type in ("number", "angle"):
-            out[name] = units.convert(float(value), step_unit, part.unit)
-        elif part.type not in ("number", "angle"):
-            out[name] = value
-    return out
+    """The value each known mistake recorded for a part's steps gives, in the asked form."""
+    return answer_type(part).mistake_values(part, derivation)
 
 
 def rerun(variant: Variant, overrides: dict[str, float]) -> Derivation:

@@ -1,38 +1,33 @@
 """Mark the parts of one question against its Variant: read, compare, carry errors forward, name mistakes.
 
 The order of judgement for a part: no answer; a format problem (no marks, said apart from
-wrong); a quantity of the wrong kind; right within tolerance; right from the student's own
+wrong); an answer of the wrong kind; right within tolerance; right from the student's own
 earlier answers (error carried forward: the solver re-run with them); otherwise wrong, with
-the mistake named when its value is recognised.
+the mistake named when its value is recognised. What reading, comparing and the messages mean
+for each kind of answer is its answer type's (exgen.answertypes).
 """
 from __future__ import annotations
 
 from typing import Any, Mapping
 
-from exgen import units
+from exgen.answertypes import answer_type
+from exgen.answertypes.base import Given
 from exgen.assignment import Question
 from exgen.derivation import Derivation
-from exgen.errors import DimensionError, ExgenError, QuantityError
+from exgen.errors import ExgenError, FormatProblem, WrongKind
 from exgen.template import PartSpec
-from exgen.variant import Answer, Polar, answer_for, mistakes_for, rerun
+from exgen.variant import Answer, answer_for, mistakes_for, rerun
 
-from . import checks
-from .mistakes import CLOSE_FACTOR, generic_mistake, template_mistake, tolerance_text
-from .reading import NUMERIC_TYPES, Given, is_blank, read_answer, wrong_kind_message
+from .mistakes import generic_mistake, template_mistake
 from .results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult, QuestionResult
 
 NO_ANSWER = "no answer given"
 RIGHT = "correct"
 CARRIED_FORWARD = "correct from your {parts}"
-FORMAT_PROBLEM = ("{reason}. This is a format problem, not a wrong answer: write a number with an "
-                  "optional unit, such as \"{example}\".")
-CHOICE_FORMAT = "{reason}. This is a format problem, not a wrong answer: write one of {choices}."
-NOT_WITHIN = "not within {tol} of the expected value"
-NOT_EXACT = "not the expected whole number"
-NOT_A_WHOLE_NUMBER = "a whole number is asked"
-WRONG_CHOICE = "not the right choice"
+FORMAT_PROBLEM = "{reason}. This is a format problem, not a wrong answer: {how}."
 WRONG_KIND = "wrong_kind"
 ZERO_FRACTION = 1e-9  # below this fraction of the key, a value counts as zero
+_WORDS_BLANK = ("", "~", "null", "none", "-")
 
 
 class QuestionMarker:
@@ -58,6 +53,7 @@ class QuestionMarker:
 
     def part(self, part: PartSpec, text: str, problem: str | None = None) -> PartResult:
         """Grade one part; `problem` is a reason the answer file gave no readable text for it."""
+        kind = answer_type(part)
         answer = self.variant.answers[part.id]
         result = _Result(part, answer, self.variant.asks.get(part.id, part.ask), text, self.question.scale)
         if problem:
@@ -65,15 +61,16 @@ class QuestionMarker:
         if is_blank(text):
             return result.make(BLANK, NO_ANSWER)
         try:
-            given = read_answer(text, part)
-        except DimensionError as exc:
-            return result.make(WRONG, wrong_kind_message(exc, part.unit), WRONG_KIND)
-        except QuantityError as exc:
+            given = kind.read(text, part)
+        except WrongKind as exc:
+            return result.make(WRONG, str(exc), WRONG_KIND)
+        except FormatProblem as exc:
             return result.make(UNREADABLE, _format_problem(part, str(exc)))
-        if part.type == "choice" and not any(checks.choice(given.value, c, checks.choice_aliases()) for c in part.choices):
-            return result.make(UNREADABLE, _format_problem(part, f"'{_short(text)}' is not one of the choices"))
         self.readings[part.id] = given
-        matches = checks.for_part(part)
+
+        def matches(value, expected) -> bool:
+            return kind.matches(value, expected, part)
+
         if _safe(matches, given.value, answer.value):
             self.right.add(part.id)
             return result.make(CORRECT, RIGHT)
@@ -81,12 +78,10 @@ class QuestionMarker:
         if carried and _safe(matches, given.value, carried[0].value):
             return result.make(CARRIED, CARRIED_FORWARD.format(parts=_names(carried[2])))
         recorded = [self.variant.mistakes.get(part.id, {})] + ([carried[1]] if carried else [])
-        mistake = template_mistake(part, given.value, recorded, matches)
-        if mistake is None:
-            mistake = generic_mistake(part, given, answer.value, matches, checks.for_part(part, CLOSE_FACTOR))
+        mistake = template_mistake(part, given.value, recorded, matches) or generic_mistake(part, given, answer.value)
         if mistake is not None:
             return result.make(WRONG, mistake.message, mistake.name)
-        return result.make(WRONG, _plain_wrong(part, given))
+        return result.make(WRONG, kind.wrong_message(given, part))
 
     def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | None:
         """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong."""
@@ -97,16 +92,9 @@ class QuestionMarker:
         overrides = {}
         try:
             for used_id in part.uses:
-                used = template.part(used_id)
-                if used_id not in self.readings:
-                    continue
-                value = self.readings[used_id].value
-                if used.type in NUMERIC_TYPES:
-                    step = self.variant.step(used.answer)
-                    overrides[used.answer] = units.convert(float(value), used.unit, step.unit)
-                elif used.type == "polar":  # both halves: the size in its step's unit, the angle in its own
-                    overrides[used.answer] = units.convert(value.magnitude, used.unit, self.variant.step(used.answer).unit)
-                    overrides[used.angle] = units.convert(value.angle_deg, "deg", self.variant.step(used.angle).unit)
+                if used_id in self.readings:
+                    used = template.part(used_id)
+                    overrides.update(answer_type(used).overrides(used, self.readings[used_id].value, self.variant))
         except (ExgenError, StopIteration, ValueError, ArithmeticError):
             return None
         derivation = self._rerun(overrides)
@@ -121,8 +109,8 @@ class QuestionMarker:
             return None
         return carried, found, wrong
 
-    def _rerun(self, overrides: dict[str, float]) -> Derivation | None:
-        key = tuple(sorted(overrides.items()))
+    def _rerun(self, overrides: dict[str, Any]) -> Derivation | None:
+        key = tuple(sorted((name, _key(value)) for name, value in overrides.items()))
         if key not in self._reruns:
             try:
                 self._reruns[key] = rerun(self.variant, overrides)
@@ -142,6 +130,19 @@ class _Result:
         points = self.max_points if status in (CORRECT, CARRIED) else 0.0
         return PartResult(self.part.id, self.ask, self.part.unit, self.text, self.answer.text, status,
                           points, self.max_points, message, mistake)
+
+
+def is_blank(text: str | None) -> bool:
+    return text is None or text.strip().lower() in _WORDS_BLANK
+
+
+def _key(value) -> Any:
+    """A hashable stand-in for an override value (numbers are; an answer object may not be)."""
+    try:
+        hash(value)
+        return value
+    except TypeError:
+        return repr(value)
 
 
 def _degenerate(value, key) -> bool:
@@ -164,25 +165,5 @@ def _names(part_ids: list[str]) -> str:
     return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " and " + shown[-1]
 
 
-def _short(text: str, limit: int = 40) -> str:
-    text = " ".join(text.split())
-    return text if len(text) <= limit else text[: limit - 1] + "\u2026"
-
-
 def _format_problem(part: PartSpec, reason: str) -> str:
-    reason = reason.rstrip(".")
-    if part.type == "choice":
-        return CHOICE_FORMAT.format(reason=reason, choices=", ".join(part.choices))
-    if part.type == "polar":
-        return FORMAT_PROBLEM.format(reason=reason, example=Polar(12.5, 30.0).text(part.unit))
-    example = units.format_quantity(12.5, part.unit, 3) if part.type != "integer" else "4"
-    return FORMAT_PROBLEM.format(reason=reason, example=example)
-
-
-def _plain_wrong(part: PartSpec, given: Given) -> str:
-    if part.type == "choice":
-        return WRONG_CHOICE
-    if part.type == "integer":
-        value = float(given.value)
-        return NOT_EXACT if value.is_integer() else NOT_A_WHOLE_NUMBER
-    return NOT_WITHIN.format(tol=tolerance_text(part))
+    return FORMAT_PROBLEM.format(reason=reason.rstrip("."), how=answer_type(part).format_hint(part))

@@ -6,7 +6,8 @@ import yaml
 
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.errors import SubmissionError
-from graders.answers import answer_form, read_submission
+from exgen.render.answer_form import answer_form
+from graders.answers import read_submission
 
 SECRET = b"x" * 32
 

@@ -69,7 +69,7 @@ def test_keys_grade_themselves_at_full_marks(issued, bank, tmp_path):
     first, _, students = issued
     assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
     from exgen.assignment import build_sheet
-    from graders.answers import answer_form
+    from exgen.render.answer_form import answer_form
 
     for student in students:
         sheet = build_sheet(assignment, student, bank, SECRET)

@@ -6,7 +6,7 @@ import os
 import pytest
 
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from graders.answers import answer_form
+from exgen.render.answer_form import answer_form
 from graders.grade import grade_batch
 from graders.report import write_results
 from graders.results import GRADED, NO_SUBMISSION, UNREADABLE_FILE

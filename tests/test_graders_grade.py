@@ -9,8 +9,9 @@ from exgen import units
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.template import PartSpec
 from exgen.variant import answer_for, make_variant, rerun
-from graders import mistakes
-from graders.answers import Submission, answer_form, read_submission
+from exgen.mistake_messages import default_messages
+from exgen.render.answer_form import answer_form
+from graders.answers import Submission, read_submission
 from graders.grade import grade_sheet, grade_variant
 from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG
 
@@ -265,7 +266,7 @@ def test_a_mistake_without_say_gets_the_default_message(bank):
     variant = make_variant(bank.get("belts.compound_drive"), 5)
     value = variant.mistakes["a"]["slip_not_applied"]
     part = grade_variant(variant, {"a": f"{value:.5g}"}).parts[0]
-    assert part.mistake == "slip_not_applied" and part.message == mistakes.MESSAGES["slip_not_applied"]
+    assert part.mistake == "slip_not_applied" and part.message == default_messages()["slip_not_applied"]
 
 
 @pytest.mark.parametrize("typed, status, text", [

@@ -7,7 +7,7 @@ from hypothesis import strategies as st
 
 from exgen.variant import make_variant
 from graders.grade import grade_variant
-from graders.reading import read_quantity
+from exgen.answertypes.quantity import read_quantity
 from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG
 
 MARKER = "/tmp/exgen-grader-was-evaluated"

@@ -1,8 +1,11 @@
 """Answers that are a magnitude at an angle: equivalent angles, add or remove, and which half is wrong."""
 import pytest
 
+from exgen.answertypes import read
+from exgen.answertypes.choice import choice, choice_aliases
 from exgen.variant import make_variant
 from graders.grade import grade_variant
+from graders.mistakes import generic_mistake
 
 
 @pytest.fixture(scope="module")
@@ -51,13 +54,8 @@ def test_incomplete_or_wrong_kind(variant, text):
 
 
 def test_half_a_turn_out_is_named_generically_when_no_template_mistake_explains_it(variant):
-    from graders.checks import for_part
-    from graders.mistakes import generic_mistake
-    from graders.reading import read_answer
-
     part = variant.template.part("a")
-    found = generic_mistake(part, read_answer("572.9 at 228", part), variant.answers["a"].value,
-                            for_part(part), for_part(part, 3))
+    found = generic_mistake(part, read("572.9 at 228", part), variant.answers["a"].value)
     assert found.name == "opposite_side" and "remove" in found.message
 
 
@@ -66,8 +64,6 @@ def test_half_a_turn_out_is_named_generically_when_no_template_mistake_explains_
     ("Unbalanced", "not balanced"), ("Counter Clockwise", "counter-clockwise"),
 ])
 def test_choice_aliases(given, expected):
-    from graders.checks import choice, choice_aliases
-
     assert choice(given, expected, choice_aliases())
 
 

@@ -5,7 +5,9 @@ import pytest
 
 from exgen import units
 from exgen.bank import load_bank
-from exgen.variant import Polar, make_variant
+from exgen.answertypes import answer_type
+from exgen.answertypes.polar import Polar
+from exgen.variant import make_variant
 from graders.grade import grade_variant
 
 TEMPLATES = ("balancing.static_balance", "balancing.two_plane_balance", "balancing.complete_balance_position",
@@ -27,9 +29,7 @@ def grade(variant, part_id, text):
 
 
 def _close(a, b, part):
-    from graders.checks import for_part
-
-    return for_part(part)(a, b)
+    return answer_type(part).matches(a, b, part)
 
 
 @pytest.mark.parametrize("template_id", TEMPLATES)

@@ -67,7 +67,7 @@ def test_substitution_is_skipped_when_it_adds_nothing():
 
 def test_integer_and_word_values():
     parts = [PartSpec("a", "belts", "n", type="integer"), PartSpec("b", "more or less", "trend", type="choice",
-                                                                    choices=("increase", "decrease"))]
+                                                                    options={"choices": ("increase", "decrease")})]
     steps = [Step("n", "n", r"\left\lceil @x \right\rceil", 4, ""), Step("trend", r"\text{power}", "", "increase")]
     answers = {"a": Answer(parts[0], 4, 4, steps[0]), "b": Answer(parts[1], "increase", "increase", steps[1])}
     variant = fake_variant(steps, [param("x", "3.2", "", 3.2)], parts, answers)

@@ -7,11 +7,9 @@ from __future__ import annotations
 
 import re
 
-from .. import units
+from ..answertypes import answer_type
 from .solution import solution
-from .targets import PLAIN
 
-ASK_UNITS = {"deg": "deg", "degree": "deg", "percent": "%"}
 _SVG_TITLE = re.compile(r"<title>(.*?)</title>", re.DOTALL)
 
 
@@ -22,37 +20,6 @@ def marks(value: float) -> str:
 
 def plural(value: float, word: str = "mark") -> str:
     return f"{marks(value)} {word}{'' if value == 1 else 's'}"
-
-
-def asked_unit(part) -> str:
-    """The unit an answer is asked in, as the sheet writes it ('deg', 'kW', 'N·m')."""
-    return ASK_UNITS.get(part.unit, units.pretty_unit(part.unit)) if part.unit else ""
-
-
-def ask_hint(part) -> str:
-    """What the answer must look like: 'answer in kW', 'a whole number', 'one of: a, b'."""
-    if part.type == "choice" and part.choices:
-        return "one of: " + ", ".join(part.choices)
-    if part.type == "integer":
-        return "a whole number" + (f", in {asked_unit(part)}" if part.unit else "")
-    if part.type == "polar":
-        return f"{asked_unit(part) or 'magnitude'} at an angle in degrees"
-    return f"answer in {asked_unit(part)}" if part.unit else "a pure number"
-
-
-def tolerance_text(part) -> str:
-    if part.type in ("integer", "choice"):
-        return "exact"
-    tol, pieces = part.tol, []
-    if part.type == "polar":
-        return f"±{tol.rel * 100:g} %, angle ±{PLAIN.quantity(tol.abs, 'deg')}"
-    if tol.rel:
-        pieces.append(f"±{tol.rel * 100:g} %")
-    if tol.abs:
-        pieces.append(f"±{PLAIN.quantity(tol.abs, part.unit)}")
-    if tol.sig:
-        pieces.append(f"{tol.sig} significant figures")
-    return " or ".join(pieces) or "exact"
 
 
 def figure_caption(number: int, svg: str | None) -> str:
@@ -85,12 +52,12 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
     v = question.variant
     parts = []
     for part in v.template.parts:
-        entry = {"id": part.id, "ask": target.text(v.asks[part.id]), "hint": target.prose(ask_hint(part)),
+        kind = answer_type(part)
+        entry = {"id": part.id, "ask": target.text(v.asks[part.id]), "hint": target.prose(kind.hint(part)),
                  "marks": plural(part.points * question.scale)}
         if key:
-            answer = v.answers[part.id]
-            entry["answer"] = target.prose(answer.text)
-            entry["tolerance"] = target.prose(tolerance_text(part))
+            entry["answer"] = kind.key_text(v.answers[part.id], target)
+            entry["tolerance"] = target.prose(kind.tolerance_text(part))
         parts.append(entry)
     context = {
         "number": question.number,

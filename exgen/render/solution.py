@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .. import units
+from ..answertypes import answer_type
 from ..derivation import PLACEHOLDER, default_symbol, expand
 from ..errors import ExgenError
 from .targets import MARKDOWN, PLAIN
@@ -115,9 +116,8 @@ def work_lines(variant) -> tuple[WorkLine, ...]:
     symbol_of, value_of = _lookups(variant)
     answered: dict[str, list[str]] = {}
     for part in variant.template.parts:
-        answered.setdefault(part.answer, []).append(part.id)
-        if part.angle:
-            answered.setdefault(part.angle, []).append(part.id)
+        for name in answer_type(part).steps(part):
+            answered.setdefault(name, []).append(part.id)
     lines = []
     for step in variant.steps:
         formula = expand(step.formula, symbol_of) if step.formula else ""
@@ -132,12 +132,9 @@ def work_lines(variant) -> tuple[WorkLine, ...]:
         asked: list[tuple[Any, str]] = []
         for part_id in parts:
             answer = variant.answers[part_id]
-            entry = (answer.value, answer.part.unit)
-            if answer.part.type == "polar":
-                entry = ((answer.value.angle_deg, "deg") if step.name == answer.part.angle
-                         else (answer.value.magnitude, answer.part.unit))
-            if isinstance(entry[0], float) and entry[1] != step.unit and entry not in asked:
-                asked.append(entry)
+            for entry in answer_type(answer.part).worked_values(answer, step.name):
+                if entry[1] != step.unit and entry not in asked:
+                    asked.append(entry)
         lines.append(WorkLine(step.name, step.symbol, formula, substituted, step.value, step.unit, step.note,
                               parts, tuple(asked)))
     return tuple(lines)

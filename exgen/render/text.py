@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import textwrap
 
-from .context import ask_hint
+from ..answertypes import answer_type
 from .solution import solution
 from .targets import PLAIN
 
@@ -24,7 +24,7 @@ def variant_text(variant, key: bool = False) -> str:
     out = [f"{template.title}  [{template.id}" + (f", seed {variant.seed}]" if variant.seed is not None else "]"),
            "", _wrap(PLAIN.text(variant.statement)), ""]
     for part in template.parts:
-        ask = f"{PLAIN.text(variant.asks[part.id])} [{ask_hint(part)}]"
+        ask = f"{PLAIN.text(variant.asks[part.id])} [{answer_type(part).hint(part)}]"
         out.append(_wrap(ask, "    ", f"({part.id}) "))
     if not key:
         return "\n".join(out)
@@ -42,5 +42,5 @@ def variant_text(variant, key: bool = False) -> str:
             out.append(f"      {PLAIN.text(line.note)}")
     out += ["", "Answers"]
     for part in template.parts:
-        out.append(f"  ({part.id}) {variant.answers[part.id].text}")
+        out.append(f"  ({part.id}) {answer_type(part).key_text(variant.answers[part.id], PLAIN)}")
     return "\n".join(out)

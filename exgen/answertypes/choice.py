@@ -1,0 +1,90 @@
+"""One of a listed set of words ("increase" or "decrease"), compared by canonical name: case, hyphens,
+underscores and spacing do not matter, and the aliases in exgen/data/choice_aliases.txt are read
+("ccw" is counter-clockwise). A word that is none of the choices is a format problem, not a wrong answer.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from importlib import resources
+from typing import Mapping
+
+from ..errors import FormatProblem
+from ..template import PartSpec
+from .base import AnswerType, Given, Report, refuse_long
+
+MAX_CHOICE_LENGTH = 80
+WRONG_CHOICE = "not the right choice"
+
+
+def canonical(name: str) -> str:
+    """'Crossed belt', 'crossed-belt' and ' CROSSED_belt ' all read as 'crossed belt'."""
+    return " ".join(str(name).replace("-", " ").replace("_", " ").lower().split())
+
+
+@lru_cache(maxsize=1)
+def choice_aliases() -> dict[str, str]:
+    """Other words for the choices templates use ("ccw" for counter-clockwise), from exgen's data."""
+    text = resources.files("exgen").joinpath("data/choice_aliases.txt").read_text("utf-8")
+    pairs = (line.split("=", 1) for line in text.splitlines() if line.strip() and not line.startswith("#"))
+    return {a.strip(): b.strip() for a, b in pairs}
+
+
+def choice(given: str, expected: str, aliases: Mapping[str, str] | None = None) -> bool:
+    """The canonical name of the given choice, after aliases ({'ccw': 'anticlockwise'}), is the expected one."""
+    table = {canonical(k): canonical(v) for k, v in (aliases or {}).items()}
+    key = canonical(given)
+    return table.get(key, key) == canonical(expected)
+
+
+class Choice(AnswerType):
+    name = "choice"
+    part_keys = ("choices",)
+
+    def load_options(self, spec: Mapping, report: Report) -> dict:
+        choices = spec.get("choices")
+        if not isinstance(choices, list) or not choices:
+            report(("choices",), "a choice answer needs its list of choices")
+            return {"choices": ()}
+        return {"choices": tuple(str(c) for c in choices)}
+
+    def problem(self, value, part: PartSpec) -> str | None:
+        choices = part.options.get("choices", ())
+        return None if value in choices else f"answer {value!r} is not one of {choices}"
+
+    def hint(self, part: PartSpec) -> str:
+        choices = part.options.get("choices", ())
+        return "one of: " + ", ".join(choices) if choices else "a word"
+
+    def form_hint(self, part: PartSpec) -> str:
+        return "one of: " + ", ".join(part.options.get("choices", ()))
+
+    def read(self, text: str, part: PartSpec) -> Given:
+        refuse_long(text, MAX_CHOICE_LENGTH)
+        word = " ".join(text.split())
+        if not any(choice(word, c, choice_aliases()) for c in part.options.get("choices", ())):
+            raise FormatProblem(f"'{_short(text)}' is not one of the choices")
+        return Given(text, word)
+
+    def example(self, part: PartSpec) -> str:
+        return part.options.get("choices", ("",))[0]
+
+    def format_hint(self, part: PartSpec) -> str:
+        return "write one of " + ", ".join(part.options.get("choices", ()))
+
+    def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
+        return choice(str(given), str(expected), choice_aliases())
+
+    def wrong_message(self, given: Given, part: PartSpec) -> str:
+        return WRONG_CHOICE
+
+    def sample_part(self) -> PartSpec:
+        return PartSpec("a", "does the power increase or decrease?", "trend", type=self.name,
+                        options={"choices": ("increase", "decrease")})
+
+
+def _short(text: str, limit: int = 40) -> str:
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[: limit - 1] + "\u2026"
+
+
+TYPE = Choice()

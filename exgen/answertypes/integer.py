@@ -1,0 +1,58 @@
+"""A whole number, graded exactly: a count of belts, of teeth. "4" and "4.0" are 4; "3.99" is not a
+whole number. A unit, when the part asks one, converts as for numbers.
+"""
+from __future__ import annotations
+
+import math
+
+from .. import units
+from ..template import PartSpec, Tolerance
+from .base import AnswerType, Given, asked_unit
+from .quantity import in_unit
+
+NOT_EXACT = "not the expected whole number"
+NOT_A_WHOLE_NUMBER = "a whole number is asked"
+
+
+def integer(given: float, expected: float) -> bool:
+    """Exactly the expected whole number ("4" and "4.0" are 4; "3.99" is not)."""
+    return math.isfinite(given) and float(given) == float(expected) and float(given).is_integer()
+
+
+class Integer(AnswerType):
+    name = "integer"
+    default_tol = Tolerance(rel=0.0, abs=0.0)
+
+    def problem(self, value, part: PartSpec) -> str | None:
+        return None if isinstance(value, int) and not isinstance(value, bool) else f"answer {value!r} is not a whole number"
+
+    def hint(self, part: PartSpec) -> str:
+        return "a whole number" + (f", in {asked_unit(part)}" if part.unit else "")
+
+    def form_hint(self, part: PartSpec) -> str:
+        return f"whole number{' of ' + part.unit if part.unit else ''}"
+
+    def read(self, text: str, part: PartSpec) -> Given:
+        reading, value = in_unit(text, part.unit)
+        return Given(text, value, reading.value, reading.unit)
+
+    def example(self, part: PartSpec) -> int:
+        return 4
+
+    def format_hint(self, part: PartSpec) -> str:
+        return "write a number with an optional unit, such as \"4\""
+
+    def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
+        return integer(given, expected)
+
+    def wrong_message(self, given: Given, part: PartSpec) -> str:
+        return NOT_EXACT if float(given.value).is_integer() else NOT_A_WHOLE_NUMBER
+
+    def overrides(self, part: PartSpec, value, variant) -> dict[str, float]:
+        return {part.answer: units.convert(float(value), part.unit, variant.step(part.answer).unit)}
+
+    def sample_part(self) -> PartSpec:
+        return PartSpec("a", "the number of belts", "n", type=self.name, tol=self.default_tol)
+
+
+TYPE = Integer()

@@ -1,0 +1,173 @@
+"""A magnitude at an angle (a balancing mass-radius, a force with its direction): "0.85 kg m at 218 deg",
+"remove 0.85 @ 38°", "0.85∠218". The size within a relative tolerance, the direction within an
+absolute one in degrees, modulo a turn; "remove m at θ" is "add m at θ + 180°". Two solver steps
+hold it: `answer:` the size and `angle:` the direction.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Mapping
+
+from .. import units
+from ..errors import ExgenError, InvalidDraw, QuantityError
+from ..template import PartSpec, Tolerance
+from .angle import ANGLE_ABS_TOL_DEG, angle, direction_slip
+from .base import AnswerType, Given, Mistake, Report, asked_unit, exact_quantity, refuse_long
+from .number import REL_TOL, numeric
+from .quantity import in_unit
+
+_POLAR = re.compile(r"(?:(add|remove|subtract|take away)\s+)?(.+?)\s*(?:\bat\b|@|\u2220|<)\s*(.+)", re.IGNORECASE)
+_REMOVE = ("remove", "subtract", "take away")
+
+OPPOSITE_SIDE = ("That direction is exactly opposite the right one. To add balancing mass, put it at the "
+                 "angle found; half a turn away is where mass would be removed (write \"remove ... at ...\" "
+                 "if that is what you mean).")
+MAGNITUDE_ONLY = "The magnitude is right; the angle is not."
+ANGLE_ONLY = "The angle is right; the magnitude is not."
+
+
+@dataclass(frozen=True)
+class Polar:
+    """A magnitude at an angle, normalised so the magnitude is not negative and the angle (degrees)
+    is in [0, 360): "remove m at θ" is the same answer as "add m at θ + 180°"."""
+
+    magnitude: float
+    angle_deg: float
+
+    @classmethod
+    def of(cls, magnitude: float, angle_deg: float) -> "Polar":
+        if magnitude < 0:
+            magnitude, angle_deg = -magnitude, angle_deg + 180.0
+        return cls(magnitude, angle_deg % 360.0)
+
+    def text(self, unit: str) -> str:
+        return f"{units.format_quantity(self.magnitude, unit)} at {units.format_quantity(self.angle_deg, 'deg')}"
+
+
+def polar(given: Polar, expected: Polar, rel: float = REL_TOL, abs_deg: float = ANGLE_ABS_TOL_DEG) -> bool:
+    """The magnitude within `rel`, the direction within `abs_deg` modulo a turn."""
+    return numeric(given.magnitude, expected.magnitude, rel) and angle(given.angle_deg, expected.angle_deg, 0.0, abs_deg)
+
+
+class PolarType(AnswerType):
+    name = "polar"
+    part_keys = ("angle",)
+    tol_keys = ("rel", "abs")
+    default_tol = Tolerance(rel=REL_TOL, abs=ANGLE_ABS_TOL_DEG)
+
+    def load_options(self, spec: Mapping, report: Report) -> dict:
+        if not spec.get("angle"):
+            report(("angle",), "a polar answer needs `angle:`, the step holding its angle")
+        return {"angle": str(spec.get("angle") or "")}
+
+    # ---- variants ----------------------------------------------------------------------------
+
+    def steps(self, part: PartSpec) -> tuple[str, ...]:
+        return (part.answer, part.options["angle"])
+
+    def expected(self, part: PartSpec, derivation) -> Polar:
+        size = self.step_value(part, derivation, part.answer)
+        direction = part.options["angle"]
+        if direction not in derivation:
+            raise ExgenError(f"{direction!r} (angle of part {part.id}) is not a step the solver records")
+        return self._polar(part, derivation, size, derivation[direction].value)
+
+    def mistake_values(self, part: PartSpec, derivation) -> dict[str, Polar]:
+        """A mistake recorded on one of the two steps keeps the right value of the other."""
+        direction = part.options["angle"]
+        sizes = derivation.mistakes.get(part.answer, {})
+        angles = derivation.mistakes.get(direction, {})
+        right_size, right_angle = derivation[part.answer].value, derivation[direction].value
+        out = {}
+        for name in {**sizes, **angles}:
+            try:
+                out[name] = self._polar(part, derivation, sizes.get(name, right_size), angles.get(name, right_angle))
+            except InvalidDraw:
+                continue
+        return out
+
+    @staticmethod
+    def _polar(part: PartSpec, derivation, magnitude, direction) -> Polar:
+        """A polar answer in the asked unit, from SI magnitude and angle (rad)."""
+        if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in (magnitude, direction)):
+            raise InvalidDraw(f"part {part.id}: answer {magnitude!r} at {direction!r} is not finite")
+        size = units.convert(float(magnitude), derivation[part.answer].unit, part.unit)
+        return Polar.of(size, units.convert(float(direction), derivation[part.options["angle"]].unit, "deg"))
+
+    def problem(self, value, part: PartSpec) -> str | None:
+        if not (math.isfinite(value.magnitude) and math.isfinite(value.angle_deg)):
+            return f"answer {value!r} is not finite"
+        return None
+
+    def text(self, value: Polar, part: PartSpec) -> str:
+        return value.text(part.unit)
+
+    def worked_values(self, answer, step_name: str):
+        if step_name == answer.part.options["angle"]:
+            return ((answer.value.angle_deg, "deg"),)
+        return ((answer.value.magnitude, answer.part.unit),)
+
+    # ---- display -----------------------------------------------------------------------------
+
+    def hint(self, part: PartSpec) -> str:
+        return f"{asked_unit(part) or 'magnitude'} at an angle in degrees"
+
+    def form_hint(self, part: PartSpec) -> str:
+        return f"{part.unit or 'size'} at deg, e.g. 1.5 {part.unit} at 218 deg"
+
+    def tolerance_text(self, part: PartSpec) -> str:
+        return f"{100 * part.tol.rel:g} % in size and {exact_quantity(part.tol.abs, 'deg')} in angle"
+
+    # ---- grading -----------------------------------------------------------------------------
+
+    def read(self, text: str, part: PartSpec) -> Given:
+        refuse_long(text)
+        match = _POLAR.fullmatch(text.strip())
+        if not match:
+            raise QuantityError(f"cannot read {text.strip()!r} as a magnitude at an angle, such as "
+                                f"\"{self.example(part).text(part.unit)}\"")
+        action, size_text, angle_text = match.groups()
+        size_reading, size = in_unit(size_text, part.unit)
+        _, angle_deg = in_unit(angle_text, "deg")
+        if action and action.lower() in _REMOVE:
+            size = -size
+        return Given(text, Polar.of(size, angle_deg), size_reading.value, size_reading.unit)
+
+    def example(self, part: PartSpec) -> Polar:
+        return Polar(12.5, 30.0)
+
+    def format_hint(self, part: PartSpec) -> str:
+        return f"write a number with an optional unit, such as \"{self.example(part).text(part.unit)}\""
+
+    def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
+        return polar(given, expected, part.tol.rel * widen, part.tol.abs * widen)
+
+    def wrong_message(self, given: Given, part: PartSpec) -> str:
+        return f"not within {self.tolerance_text(part)} of the expected value"
+
+    def slip(self, given: Given, expected, part: PartSpec) -> Mistake | None:
+        """Which half of the answer is wrong, and why the angle might be."""
+        value = given.value
+        size_right = numeric(value.magnitude, expected.magnitude, part.tol.rel)
+        angle_right = angle(value.angle_deg, expected.angle_deg, 0.0, part.tol.abs)
+        if size_right and not angle_right:
+            return direction_slip(value.angle_deg, expected.angle_deg, part.tol.abs, OPPOSITE_SIDE) or \
+                Mistake("angle_wrong", MAGNITUDE_ONLY)
+        if angle_right and not size_right:
+            return Mistake("magnitude_wrong", ANGLE_ONLY)
+        return None
+
+    def overrides(self, part: PartSpec, value: Polar, variant) -> dict[str, float]:
+        """Both halves: the size in its step's unit, the angle in its own."""
+        direction = part.options["angle"]
+        return {part.answer: units.convert(value.magnitude, part.unit, variant.step(part.answer).unit),
+                direction: units.convert(value.angle_deg, "deg", variant.step(direction).unit)}
+
+    def sample_part(self) -> PartSpec:
+        return PartSpec("a", "the balancing mass-radius", "mr", "kg*mm", type=self.name, tol=self.default_tol,
+                        options={"angle": "theta"})
+
+
+TYPE = PolarType()

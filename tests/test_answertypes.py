@@ -1,0 +1,123 @@
+"""Every answer type, through the registry: found, loaded from YAML with file:line errors, read safely,
+and one tolerance rule for what the key prints and what the grader applies."""
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from exgen.answertypes import answer_type, names, read, registry
+from exgen.bank import load_template
+from exgen.errors import BankError, FormatProblem, WrongKind
+from exgen.template import PartSpec, Tolerance
+
+KINDS = sorted(registry())
+
+TEMPLATE = """\
+id: demo.types
+title: Answer types
+solver: belts:driven_speed
+params:
+  N1: {min: 720, max: 1800, step: 20, unit: rpm}
+  d1: {min: 20, max: 50, step: 1, unit: cm}
+  d2: {min: 60, max: 120, step: 5, unit: cm}
+  G1: {choices: [1, 2], unit: percent}
+  G2: {choices: [1, 2], unit: percent}
+  t:  {value: 8, unit: mm}
+statement: A motor at {{ N1 }} drives a pulley of {{ d2 }} from one of {{ d1 }}.
+parts:
+  - {id: a, ask: the speed, answer: N2_slip, unit: rpm, PART}
+"""
+
+
+def load(tmp_path: Path, part: str):
+    path = tmp_path / "t.yaml"
+    path.write_text(TEMPLATE.replace("PART", part), encoding="utf-8")
+    return load_template(path)
+
+
+def problems(tmp_path: Path, part: str) -> list[str]:
+    with pytest.raises(BankError) as info:
+        load(tmp_path, part)
+    return [str(e) for e in info.value.errors]
+
+
+def test_the_registry_finds_every_type():
+    assert {"number", "angle", "integer", "choice", "polar"} <= set(names())
+    assert all(answer_type(name).name == name for name in names())
+    with pytest.raises(KeyError, match="is not an answer type; the types are angle, choice"):
+        answer_type("vector")
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_a_type_reads_back_what_it_prints(kind):
+    answers = answer_type(kind)
+    part = answers.sample_part()
+    value = answers.example(part)
+    reading = read(answers.text(value, part), part)
+    assert answers.matches(reading.value, value, part)
+    for text in (answers.hint(part), answers.form_hint(part), answers.tolerance_text(part), answers.format_hint(part)):
+        assert text and "\n" not in text
+
+
+@pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("text", ["x" * 1_000_000, "(" * 100_000, "__import__('os').system('ls')",
+                                  "9^9^9^9", "\x00\x01", "1e999999", "", "   "])
+def test_a_hostile_answer_is_a_format_problem_of_every_type(kind, text):
+    part = answer_type(kind).sample_part()
+    with pytest.raises((FormatProblem, WrongKind)):
+        read(text, part)
+
+
+@pytest.mark.parametrize("kind", KINDS)
+@settings(max_examples=200, deadline=None)
+@given(text=st.text(max_size=120))
+def test_any_text_is_read_or_refused_with_a_reason(kind, text):
+    part = answer_type(kind).sample_part()
+    try:
+        read(text, part)
+    except (FormatProblem, WrongKind) as exc:
+        assert str(exc)
+
+
+# ---- significant figures: the key says what the grader does ------------------------------------
+
+def test_sig_replaces_the_relative_tolerance(tmp_path):
+    part = load(tmp_path, "tol: {sig: 3}").part("a")
+    answers = answer_type(part)
+    assert part.tol == Tolerance(rel=0.0, abs=0.0, sig=3)
+    assert answers.tolerance_text(part) == "3 significant figures"
+    assert answers.matches(1004.0, 1000.0, part)       # 1.00e3 to three figures
+    assert not answers.matches(1006.0, 1000.0, part)   # 1.01e3: within 1 %, but not to three figures
+    assert answers.matches(0.00124, 0.0012361, part) and not answers.matches(0.00123, 0.0012361, part)
+    assert "1 %" in answers.wrong_message(read("1006", part), load(tmp_path, "tol: {rel: 0.01}").part("a"))
+    assert answers.wrong_message(read("1006", part), part) == "not within 3 significant figures of the expected value"
+
+
+def test_sig_with_an_absolute_floor(tmp_path):
+    part = load(tmp_path, "tol: {sig: 2, abs: 0.5}").part("a")
+    assert answer_type(part).tolerance_text(part) == "2 significant figures or 0.5 rpm"
+    assert answer_type(part).matches(0.4, 0.0, part)
+
+
+@pytest.mark.parametrize("part, message", [
+    ("tol: {sig: 3, rel: 0.01}", "parts.0.tol: give `rel` or `sig`, not both"),
+    ("tol: {sig: 2.5}", "parts.0.tol.sig: must be a whole number of figures from 1 to 15"),
+    ("tol: {sig: 0}", "parts.0.tol.sig: must be a whole number of figures from 1 to 15"),
+    ("tol: {rel: 0.01, deg: 1}", "parts.0.tol.deg: not a tolerance of a number answer; expected one of rel, abs, sig"),
+    ("type: angle, tol: {sig: 3}", "parts.0.tol.sig: not a tolerance of an angle answer; expected one of rel, abs"),
+    ("type: integer, tol: {rel: 0.01}", "parts.0.tol: an integer answer is graded exactly; remove `tol:`"),
+    ("type: choice", "parts.0.choices: a choice answer needs its list of choices"),
+    ("type: polar", "parts.0.angle: a polar answer needs `angle:`, the step holding its angle"),
+    ("choices: [a, b]", "parts.0.choices: unknown key"),
+    ("tol: 0.01", "parts.0.tol: must be a mapping such as {rel: 0.01}"),
+])
+def test_a_type_checks_its_own_keys_with_file_and_line(tmp_path, part, message):
+    found = problems(tmp_path, part)
+    assert any(f"t.yaml:13: {message}" in p for p in found), found
+
+
+def test_defaults_come_from_the_type(tmp_path):
+    assert load(tmp_path, "unit: rpm").part("a").tol == answer_type("number").default_tol
+    assert load(tmp_path, "type: angle").part("a").tol == answer_type("angle").default_tol
+    assert PartSpec("a", "x", "v").tol == answer_type("number").default_tol
