@@ -76,6 +76,19 @@ class _Parser:
             return self.sequence("}")
         return self.item() if self.peek() is not None else ""
 
+    def text_argument(self) -> str:
+        """The argument of \\text and friends, keeping its spaces ("spring in tension")."""
+        if self.peek() != "{":
+            return self.argument()
+        self.take()
+        parts = []
+        while self.peek() is not None and self.peek() != "}":
+            parts.append(" " if self.peek() == " " else self.item())
+            if parts[-1] == " ":
+                self.take()
+        self.take()
+        return "".join(parts)
+
     def item(self) -> str:
         token = self.take()
         if token == "{":
@@ -103,7 +116,9 @@ class _Parser:
         if name == "operatorname":
             return self.function(self.argument())
         if name in TEXT_COMMANDS:
-            return self.argument()
+            return self.text_argument()
+        if name == "vec":  # a vector: the symbol with a combining arrow above (ω⃗)
+            return self.argument() + "\u20d7"
         if name in DROPPED:
             return ""
         if name in SPACES:
