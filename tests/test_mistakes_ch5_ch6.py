@@ -5,8 +5,8 @@ gyroscopic couple added where it relieves."""
 import pytest
 
 from exgen import units
+from exgen.answertypes import answer_type
 from exgen.variant import make_variant
-from graders.checks import for_part
 from graders.grade import grade_variant
 
 
@@ -41,7 +41,7 @@ def test_every_named_mistake_is_recognised_with_its_own_words(bank):
                     result = grade(variant, part.id, as_text(recorded[spec.when], part))
                     assert result.status == "wrong", (template_id, seed, part.id, spec.when)
                     same = [m.when for m in part.mistakes if m.when in recorded and
-                            for_part(part)(recorded[m.when], recorded[spec.when])]
+                            answer_type(part).matches(recorded[m.when], recorded[spec.when], part)]
                     assert result.mistake in same, (template_id, seed, part.id, spec.when, result.mistake)
                     if result.mistake == spec.when and spec.say:
                         assert result.message == spec.say
