@@ -23,7 +23,7 @@ from .template import MistakeSpec, ParamSpec, PartSpec, Template
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
-                 "solver", "statement", "parts", "figure"}
+                 "solver", "statement", "parts", "figure", "key_figures"}
 PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
 MAX_VALUES = 100_000
@@ -158,6 +158,7 @@ class _Reader:
         require = self.require(data.get("require") or [], names)
         solver = self.reference(data.get("solver"), "solvers", ("solver",))
         figure = self.reference(data.get("figure"), "figures", ("figure",)) if data.get("figure") else None
+        key_figures = self.key_figures(data.get("key_figures"))
         statement = str(data.get("statement") or "")
         self.check_text(statement, names, ("statement",))
         parts = self.parts(data.get("parts") or [], names)
@@ -167,7 +168,8 @@ class _Reader:
         return Template(
             id=str(data.get("id", "")), title=str(data.get("title", "")), chapter=chapter if isinstance(chapter, int) else 0,
             section=str(data.get("section", "")), params=params, require=require, solver=solver or "",
-            statement=statement, parts=parts, figure=figure, source=str(data.get("source", "")),
+            statement=statement, parts=parts, figure=figure, key_figures=key_figures,
+            source=str(data.get("source", "")),
             topic=str(data.get("topic", "")), path=self.path, version=version,
         )
 
@@ -244,6 +246,16 @@ class _Reader:
             if unknown:
                 self.error(("require", i), f"names no parameter: {', '.join(sorted(unknown))}")
         return tuple(str(c) for c in data)
+
+    def key_figures(self, data) -> tuple[str, ...]:
+        """`key_figures:` a list of figure functions ('polygons:two_plane_polygons') only the key shows."""
+        if data is None:
+            return ()
+        if not isinstance(data, list):
+            self.error(("key_figures",), "must be a list such as [polygons:two_plane_polygons]")
+            return ()
+        refs = [self.reference(ref, "figures", ("key_figures", i)) for i, ref in enumerate(data)]
+        return tuple(ref for ref in refs if ref)
 
     def reference(self, ref, package: str, where) -> str | None:
         """'belts:flat_belt_power' -> checks exgen.<package>.belts has that function."""

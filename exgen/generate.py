@@ -41,19 +41,19 @@ def draw_sheets(assignment: Assignment, students: list[Student], bank: Bank, sec
     return [build_sheet(assignment, s, bank, secret) for s in progress(students, len(students), "drawing")]
 
 
-def write_figures(sheet: Sheet, folders: list[Path]) -> dict[str, str]:
-    """Each question's figure, drawn once, as an SVG file in every folder; returns slot -> file name."""
-    from .figures import figure_svg
+def write_figures(sheet: Sheet, student_dir: Path, key_dir: Path):
+    """Each question's figures, drawn once: the sheet's figure as an SVG file in both folders, a
+    key-only figure in the key's folder alone. Returns the drawn figures for the renderers."""
+    from .figures import draw_figures
 
-    files = {}
-    for question in sheet.questions:
-        svg = figure_svg(question.variant)
-        if svg:
-            name = f"{question.slot}.svg"
-            for folder in folders:
-                (folder / name).write_text(svg, encoding="utf-8")
-            files[question.slot] = name
-    return files
+    figures = draw_figures(sheet)
+    for drawn in figures.values():
+        if drawn.sheet:
+            for folder in (student_dir, key_dir):
+                (folder / drawn.sheet.name).write_text(drawn.sheet.svg, encoding="utf-8")
+        for figure in drawn.key:
+            (key_dir / figure.name).write_text(figure.svg, encoding="utf-8")
+    return figures
 
 
 def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
@@ -64,15 +64,15 @@ def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
     key_dir = out / "keys" / sheet.student.id
     for folder in (student_dir, key_dir):
         folder.mkdir(parents=True, exist_ok=True)
-    figures = write_figures(sheet, [student_dir, key_dir])
+    figures = write_figures(sheet, student_dir, key_dir)
     (student_dir / "sheet.md").write_text(sheet_markdown(sheet, figures), encoding="utf-8")
     (student_dir / "answers.yaml").write_text(answer_form(sheet), encoding="utf-8")
     (key_dir / "key.md").write_text(key_markdown(sheet, figures), encoding="utf-8")
     if pdf:
         from .render.pdf import key_pdf, sheet_pdf
 
-        (student_dir / "sheet.pdf").write_bytes(sheet_pdf(sheet))
-        (key_dir / "key.pdf").write_bytes(key_pdf(sheet))
+        (student_dir / "sheet.pdf").write_bytes(sheet_pdf(sheet, figures))
+        (key_dir / "key.pdf").write_bytes(key_pdf(sheet, figures))
 
 
 def _write_in_worker(job) -> str:

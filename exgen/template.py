@@ -95,6 +95,7 @@ class Template:
     statement: str
     parts: tuple[PartSpec, ...]
     figure: str | None = None
+    key_figures: tuple[str, ...] = ()  # figures only the key shows, beside the working
     source: str = ""
     topic: str = ""
     path: Path | None = None

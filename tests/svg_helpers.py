@@ -3,6 +3,7 @@ import dataclasses
 import xml.etree.ElementTree as ET
 from decimal import Decimal
 
+from exgen.figures import checks
 from exgen.variant import build_variant, make_variant
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -24,7 +25,8 @@ def root(svg: str) -> ET.Element:
 
 
 def texts(svg: str) -> list[str]:
-    return ["".join(t.itertext()) for t in root(svg).iter(f"{SVG}text")]
+    """The labels as the drawing code wrote them (script digits as Unicode sub- and superscripts)."""
+    return checks.texts(svg)
 
 
 def elements(svg: str, cls: str, tag: str = "line") -> list[ET.Element]:

@@ -9,6 +9,7 @@ from exgen import units
 from exgen.errors import ExgenError
 from exgen.figures import figure_svg
 from exgen.figures.belts import belt_drive, compound_drive
+from exgen.figures.metrics import FAMILY
 from exgen.figures.svg import num, subscripted
 from exgen.figures.tangents import belt_loop
 from exgen.template import ParamSpec
@@ -44,7 +45,7 @@ def test_every_figure_template_gives_valid_svg_with_a_viewbox(bank):
             assert top.tag == f"{SVG}svg"
             x0, y0, w, h = map(float, top.get("viewBox").split())
             assert w > 100 and h > 50, template.id
-            assert "DejaVu Sans" in top.get("font-family")
+            assert top.get("font-family").startswith(f"'{FAMILY}'")
 
 
 def test_template_without_figure_gives_none(bank):

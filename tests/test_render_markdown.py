@@ -5,6 +5,7 @@ import pytest
 
 from exgen import units
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.figures import draw_figures
 from exgen.render.markdown import key_markdown, sheet_markdown
 from exgen.render.mathtext import text_to_markdown
 from exgen.variant import make_variant
@@ -22,7 +23,7 @@ def sheet(bank):
 
 @pytest.fixture(scope="module")
 def figures(sheet):
-    return {q.slot: f"{q.slot}.svg" for q in sheet.questions if q.variant.template.figure}
+    return draw_figures(sheet)
 
 
 @pytest.fixture(scope="module")
@@ -56,8 +57,8 @@ def test_every_statement_ask_and_figure(sheet, figures, student_md):
                 assert str(p) in student_md
         for part in v.template.parts:
             assert f"**({part.id})** {text_to_markdown(v.asks[part.id])}" in student_md
-        if q.slot in figures:
-            assert f"]({figures[q.slot]})" in student_md
+        if figures[q.slot].sheet:
+            assert f"]({figures[q.slot].sheet.name})" in student_md
 
 
 def test_marks_follow_the_question_scale(sheet, student_md):

@@ -8,7 +8,7 @@ import math
 
 from .shafts import (MIN_WIDTH, OUTLINE, SHAFT_H, Convention, Plane, Spoke, chain, end_view, fit_width, ordinates,
                      side_view)
-from .svg import Drawing
+from .svg import NOTE_SIZE, Drawing
 from .values import shown
 
 GAP = 70.0            # between the side view and the end view
@@ -26,16 +26,12 @@ def _si(variant, name: str) -> float:
     return found.si if found is not None else float("nan")
 
 
-def _mass_spoke(variant, tag: str, mass: str, radius: str, angle: str | None, known: bool = True) -> Spoke:
-    """A spoke sized by m·r; `angle` None puts it on the 0° line."""
-    size = _si(variant, mass) * _si(variant, radius)
-    if not math.isfinite(size) or size <= 0:
-        size = _si(variant, radius)
-    if not known:
-        return Spoke(tag, f"{tag}: angle ?", size, None)
+def _mass_spoke(variant, tag: str, mass: str, radius: str, angle: str | None) -> Spoke:
+    """A mass at its radius (the arm's length) and angle; `angle` None puts it on the 0° line."""
+    size, weight = _si(variant, radius), _si(variant, mass)
     theta = 0.0 if angle is None else _si(variant, angle)
     shown_angle = "0°" if angle is None else _value(variant, angle)
-    return Spoke(tag, f"{tag}: {shown_angle}", size, theta)
+    return Spoke(tag, f"{tag}: {shown_angle}", size, theta, weight if math.isfinite(weight) and weight > 0 else 0.0)
 
 
 def _place_end_view(d: Drawing, spokes, conv: Convention, note: str = "") -> None:
@@ -63,7 +59,7 @@ def shaft_two_planes(variant) -> str:
     d = Drawing()
     x_of = side_view(d, planes, ends=(0.0, max(p.z for p in planes) + 0.15))
     ordinates(d, x_of, [(p.z, _value(variant, "z" + p.name)) for p in planes])
-    d.text((x_of(0.0), d.box[3] + 18), "positions from the left end", anchor="start", size=13, style="italic")
+    d.text((x_of(0.0), d.box[3] + 18), "positions from the left end", anchor="start", size=NOTE_SIZE, style="italic")
     spokes = [_mass_spoke(variant, str(i), f"m{i}", f"r{i}", f"theta{i}") for i in (1, 2, 3)]
     spokes += [Spoke("P", "P: angle ?", 1.0, None), Spoke("Q", "Q: angle ?", 1.0, None)]
     _place_end_view(d, spokes, Convention(-math.pi / 2, True, "0°"), "seen from the left end")
@@ -101,8 +97,8 @@ def shaft_masses(variant) -> str:
     x_of = side_view(d, planes)
     chain(d, x_of, [(0.0, l_ab, _value(variant, "lAB")), (l_ab, l_ab + l_bc, _value(variant, "lBC"))], DIM_ROW)
     chain(d, x_of, [(0.0, l_ab + 1.6 * l_bc, "A to D = ?")], DIM_ROW + 30, top=DIM_ROW + 6)
-    spokes = [Spoke("B", "B: 0°", 1.0, 0.0), Spoke("C", f"C: {_value(variant, 'thetaC')}", 1.0, _si(variant, "thetaC")),
-              Spoke("A", f"A: {_value(variant, 'thetaA')}", 1.0, _si(variant, "thetaA")),
+    spokes = [_mass_spoke(variant, "B", "mB", "rBC", None), _mass_spoke(variant, "C", "mC", "rBC", "thetaC"),
+              Spoke("A", f"A: {_value(variant, 'thetaA')}", _si(variant, "rAD"), _si(variant, "thetaA")),
               Spoke("D", "D: angle ?", 1.0, None)]
     _place_end_view(d, spokes, Convention(0.0, False, FROM_RIGHT.format(name="B")), "seen from the end at A")
     return d.svg("Shaft with masses A, B, C and D; D's plane not to scale")
@@ -121,7 +117,7 @@ def shaft_bearings(variant) -> str:
     x_of = side_view(d, planes)
     chain(d, x_of, [(z[i], z[i + 1], _value(variant, k)) for i, k in enumerate(("a", "b", "c", "e"))],
           DIM_ROW + 12, top=SHAFT_H + 24)
-    d.text((x_of(z[4]) + 34, -4), f"{_value(variant, 'N')}", anchor="start", size=13, style="italic")
+    d.text((x_of(z[4]) + 34, -4), f"{_value(variant, 'N')}", anchor="start", size=NOTE_SIZE, style="italic")
     spokes = [_mass_spoke(variant, "A", "mA", "rA", None), _mass_spoke(variant, "B", "mB", "rB", "thetaB"),
               _mass_spoke(variant, "C", "mC", "rC", "thetaC")]
     _place_end_view(d, spokes, Convention(0.0, False, FROM_RIGHT.format(name="A")), "seen from the end at A")

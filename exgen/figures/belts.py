@@ -89,8 +89,8 @@ def compound_drive(variant) -> str:
         belt_motion(drawing, loop, (0.5, 0.5))
     diameter_mark(drawing, motor, r[0])
     # Nearly level, so the tags sit where no belt runs: d₂ left of the main shaft, d₃ right of it.
-    diameter_mark(drawing, main, r[1], 15, subscripted("d2"), "left", inside=r[2] > r[1])
-    diameter_mark(drawing, main, r[2], -15, subscripted("d3"), "right")
+    diameter_mark(drawing, main, r[1], 25, subscripted("d2"), "left", inside=r[2] > r[1])
+    diameter_mark(drawing, main, r[2], -25, subscripted("d3"), "right")
     diameter_mark(drawing, counter, r[3])
     drawing.rotation_arrow(motor, rb[0] + ARC_GAP, True, 130, 230)
     drawing.rotation_arrow(counter, rb[3] + ARC_GAP, True, -50, 50)

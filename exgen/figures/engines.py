@@ -7,8 +7,9 @@ from __future__ import annotations
 import math
 
 from .balancing import DIM_ROW, GAP, _si, _value
-from .shafts import DISC_H, MIN_WIDTH, OUTLINE, ROW, SMALL, Convention, Plane, Spoke, chain, end_view, fit_width, side_view
-from .svg import LINE, THIN, Drawing, on_circle, pts
+from .shafts import DISC_H, MIN_WIDTH, OUTLINE, ROW, Convention, Plane, Spoke, chain, end_view, fit_width, side_view
+from .layout import text_box
+from .svg import FONT_SIZE, LINE, NOTE_SIZE, THIN, Drawing, on_circle, pts
 from .values import shown
 
 STROKE_LINE = "0° (line of stroke)"
@@ -26,7 +27,7 @@ def _inline_side(d: Drawing, count: int, pitch: float, pitch_text: str):
     middle = x_of((count - 1) * pitch / 2)
     d.line((middle, -DISC_H - 2), (middle, DIM_ROW - 20), THIN, dash="10 3 2 3", cls="centre-plane")
     d.line((middle, DIM_ROW + 3), (middle, DIM_ROW + 10), THIN)  # broken round the pitch label
-    d.text((middle, DIM_ROW + 10 + ROW), "centre plane (ref.)", size=SMALL - 1, style="italic")
+    d.text((middle, DIM_ROW + 10 + ROW), "centre plane (ref.)", size=NOTE_SIZE, style="italic")
     return x_of
 
 
@@ -53,7 +54,7 @@ def inline_firing(variant) -> str:
     strokes = _value(variant, "strokes")
     y = d.box[3] + 22
     d.text((x_of(0.0), y), f"firing order {order}, {strokes}-stroke: crank angles ?", anchor="start",
-           size=SMALL + 1, style="italic", cls="firing")
+           style="italic", cls="firing")
     fit_width(d, MIN_WIDTH)
     return d.svg(f"In-line engine with {count} cylinders, firing order {order}")
 
@@ -75,9 +76,9 @@ def primary_balance_cranks(variant) -> str:
     return d.svg("Four-crank engine: planes of the cranks and the outer cranks' angles")
 
 
-def _cylinders(d: Drawing, alphas, ratio: float, names) -> None:
+def _cylinders(d: Drawing, alphas, ratio: float, names) -> float:
     """Cylinder barrels on lines at screen angles `alphas` round one crank at the origin, with their
-    connecting rods to the crank pin and the pin's circle."""
+    connecting rods to the crank pin and the pin's circle; returns the barrels' outer reach."""
     c = (0.0, 0.0)
     ratio = min(max(ratio, 2.5), 6.0)
     r = REACH / (ratio + 1)
@@ -103,24 +104,51 @@ def _cylinders(d: Drawing, alphas, ratio: float, names) -> None:
                   for s1, s2 in ((1, -1), (1, 1), (-1, 1), (-1, -1))]
         d.polygon(piston, fill="white", width=LINE)
         d.line(pin, gudgeon, 2.0, cls="rod")
-        label = on_circle(c, outer + 30, alpha)
-        d.text((label[0], label[1] + 5), name, size=SMALL + 1, weight="bold", cls=f"cylinder cylinder-{name}")
     d.circle(c, r, THIN, dash="4 3", cls="crank-circle")
     d.line(c, pin, 4.0, cls="crank")
     d.circle(pin, 4.0, LINE, fill="white")
     d.centre_mark(c, 8)
-    # the sense of rotation, in the gap after the first cylinder line, clear of the rods
-    gap = math.degrees(alphas[0] + (alphas[1] - alphas[0]) / 2 + math.pi) if len(alphas) > 1 else 90.0
-    d.rotation_arrow(c, r + 9, True, gap - 16, gap + 16)
-    at = on_circle(c, r + 24, math.radians(gap))
-    d.text((at[0], at[1] + 5), "\u03c9", size=SMALL, style="italic", cls="omega")
+    _sense(d, c, r, alphas)
+    return l + r + 24
+
+
+def _sense(d: Drawing, c, r: float, alphas) -> None:
+    """The crank's sense of rotation: an arrow round the crank axis with its ω, where neither crosses a
+    rod, a barrel or a line of stroke (near the crank if there is room, else outside the cylinders)."""
+    spacing = 2 * math.pi / len(alphas) if len(alphas) > 2 else math.pi
+    middles = [a + spacing / 2 for a in alphas] + [a - spacing / 2 for a in alphas] + [math.pi / 2]
+    for radius in (r + 10, r + 18, r + 28, REACH + 20, REACH + 40, REACH + 60):
+        half = min(16.0, math.degrees(spacing) / 2 - 6)
+        for middle in middles:
+            mid = math.degrees(middle)
+            arc = [on_circle(c, radius, math.radians(mid - half + 2 * half * k / 8)) for k in range(9)]
+            at = on_circle(c, radius + 15, middle)
+            box = text_box((at[0], at[1] + 5), "\u03c9", "middle", FONT_SIZE, italic=True)
+            if not d.crosses(arc) and not d.clashes(box):
+                d.rotation_arrow(c, radius, True, mid - half, mid + half)
+                d.text((at[0], at[1] + 5), "\u03c9", style="italic", cls="omega")
+                return
+    raise ValueError("no room for the sense of rotation")
+
+
+def _number(d: Drawing, names, alphas, outer: float) -> None:
+    """Each cylinder's number beyond its barrel: on its line of stroke, or beside it where lines run on."""
+    for name, alpha in zip(names, alphas):
+        ux, uy = math.cos(alpha), math.sin(alpha)
+        candidates = []
+        for along in (outer + 26, outer + 14, outer + 40):
+            for side in (0, 1, -1, 2, -2):
+                x = ux * along - uy * side * 12
+                y = uy * along + ux * side * 12
+                candidates.append(((x, y + 5), "middle"))
+        d.place(candidates, name, weight="bold", cls=f"cylinder cylinder-{name}")
 
 
 def _data_lines(d: Drawing, lines) -> None:
     """The engine's data in a column to the right of the drawing."""
     x, y = d.box[2] + 36, d.box[1] + 40
     for text in lines:
-        d.text((x, y), text, anchor="start", size=SMALL + 1, cls="data")
+        d.text((x, y), text, anchor="start", cls="data")
         y += 21
 
 
@@ -135,7 +163,9 @@ def radial_cylinders(variant) -> str:
     alphas = [-math.pi / 2 + 2 * math.pi * i / count for i in range(count)]
     ratio = _si(variant, "l") / (_si(variant, "S") / 2)
     d = Drawing()
-    _cylinders(d, alphas, ratio, [str(i + 1) for i in range(count)])
+    names = [str(i + 1) for i in range(count)]
+    outer = _cylinders(d, alphas, ratio, names)
+    _number(d, names, alphas, outer)
     _data_lines(d, _engine_data(variant))
     fit_width(d, MIN_WIDTH)
     return d.svg(f"Radial engine with {count} cylinders on one crank")
@@ -147,7 +177,7 @@ def v_cylinders(variant) -> str:
     alphas = [-math.pi / 2 - v / 2, -math.pi / 2 + v / 2]
     ratio = _si(variant, "l") / (_si(variant, "S") / 2)
     d = Drawing()
-    _cylinders(d, alphas, ratio, ["1", "2"])
+    outer = _cylinders(d, alphas, ratio, ["1", "2"])
     radius = REACH + 78  # beyond the cylinder numbers
     a, b = on_circle((0, 0), radius, alphas[0]), on_circle((0, 0), radius, alphas[1])
     d.path(f"M {pts(a)} A {radius:.2f} {radius:.2f} 0 0 1 {pts(b)}", THIN, cls="v-angle")
@@ -156,7 +186,8 @@ def v_cylinders(variant) -> str:
     for tip, direction in ((a, alphas[0] - math.pi / 2), (b, alphas[1] + math.pi / 2)):
         d.arrowhead(tip, (math.cos(direction), math.sin(direction)), 7)
     d.extend(min(a[0], b[0]), -radius - 4, max(a[0], b[0]), -radius)
-    d.text((0.0, -radius - 8), _value(variant, "V"), size=SMALL + 1, cls="v-label")
+    d.text((0.0, -radius - 8), _value(variant, "V"), cls="v-label")
+    _number(d, ["1", "2"], alphas, outer)
     _data_lines(d, _engine_data(variant))
     fit_width(d, MIN_WIDTH)
     return d.svg("V-twin engine: two cylinders on one crank")

@@ -11,14 +11,14 @@ from dataclasses import dataclass
 
 from .gears import fit_width
 from .pulleys import CENTRE_DASH, need
-from .svg import LINE, THIN, Drawing, subscripted
+from .svg import FONT_SIZE, LINE, THIN, Drawing, subscripted
 from .values import choice, shown
 
 FACE = 16.0        # px: a gear's face width
 COLUMN = 170.0     # px between mesh columns (room for labels)
 HEIGHT = 330.0     # px from the lowest to the highest gear
 END = 70.0         # shaft beyond its outer gears
-LABEL = 14.0       # label font size
+LABEL = FONT_SIZE
 ROW = 17.0
 
 
@@ -50,7 +50,7 @@ def _draw(drawing: Drawing, levels: dict[str, float], spans: dict[str, tuple[flo
         else:
             ys = [y - 6 - LABEL * 0.24 - (len(lines) - 1 - i) * ROW for i in range(len(lines))]
         for i, (text, ty) in enumerate(zip(lines, ys)):
-            drawing.text((x + FACE / 2 + 6, ty), text, anchor="start", size=LABEL, weight="bold" if i == 0 else "")
+            drawing.text((x + FACE / 2 + 6, ty), text, anchor="start", weight="bold" if i == 0 else "")
 
 
 def _vertical_dimension(drawing: Drawing, x: float, y0: float, y1: float, label: str) -> None:
@@ -120,9 +120,11 @@ def reverted_train(variant) -> str:
             Bar("B", 1, m2 * t4 / 2, ("Gear 4", teeth("t4"), module("m2"), "B turns at ?"), True)]
     drawing = Drawing()
     _draw(drawing, levels, spans, bars, scale)
-    for name, at in (("A", (-END - 14, 5)), ("B", (COLUMN + END + 14, 5)), ("C", (COLUMN + 40, 20))):
-        drawing.text((at[0], levels[name] + at[1]), name, weight="bold", cls=f"shaft-name {name}")
-    _vertical_dimension(drawing, -END - 40, levels["A"], levels["C"], "C = ?")
+    _vertical_dimension(drawing, -END - 40, levels["A"], levels["C"], "A to C = ?")
+    for name, x, anchor in (("A", -END - 18, "end"), ("B", COLUMN + END + 18, "start"), ("C", COLUMN + 38, "start")):
+        y = levels[name]
+        drawing.place([((x, y + 5), anchor), ((x, y - 6), anchor), ((x, y + 20), anchor)], name, weight="bold",
+                      cls=f"shaft-name {name}")
     drawing.line((-END - 46, levels["C"]), (-32.0, levels["C"]), THIN, dash=CENTRE_DASH)
     fit_width(drawing)
     return drawing.svg("Reverted gear train: shafts A and B in line, geared through C")

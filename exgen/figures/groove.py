@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import math
 
-from .svg import THIN, Drawing, num, on_circle, pts
+from .svg import NOTE_SIZE, THIN, Drawing, num, on_circle, pts
 
 _DEPTH = 48.0     # groove depth
 _FLOOR = 8.0      # width of the groove floor
@@ -46,5 +46,5 @@ def groove_inset(drawing: Drawing, x0: float, y0: float, groove_rad: float, labe
     for side, end in zip((-1, 1), ends):
         t = -math.pi / 2 + side * beta
         drawing.arrowhead(end, (side * -math.sin(t), side * math.cos(t)), 6)
-    drawing.text((cx, apex[1] - radius - 7), label, size=14, cls="label-groove")
-    drawing.text((cx, floor + _RIM + 16), "V-groove section", size=12, style="italic")
+    drawing.text((cx, apex[1] - radius - 7), label, cls="label-groove")
+    drawing.text((cx, floor + _RIM + 16), "V-groove section", size=NOTE_SIZE, style="italic")

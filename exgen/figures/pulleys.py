@@ -48,7 +48,14 @@ def diameter_mark(drawing: Drawing, c, r: float, angle_deg: float = 45.0, tag: s
         anchor, dx, dy = ("start" if outward < 0 else "end"), -outward * 10, -9
     else:
         anchor, dx, dy = ("end" if outward < 0 else "start"), outward * 4, 5
-    drawing.text((end[0] + dx, end[1] + dy), tag, anchor=anchor, size=13)
+    at = (end[0] + dx, end[1] + dy)
+    candidates = [((at[0] + ox, at[1] + oy), anchor) for ox, oy in ((0, 0), (0, -8), (0, 8), (-outward * 8, -10),
+                                                                   (outward * 8, 10), (0, -16), (0, 16))]
+    # failing those, along the dimension line inside the rim, just above or below it
+    for share in (0.7, 0.5, 0.85, 0.35):
+        x, y = c[0] + (end[0] - c[0]) * share, c[1] + (end[1] - c[1]) * share
+        candidates += [((x, y - 5), "middle"), ((x, y + 16), "middle")]
+    drawing.place(candidates, tag)
 
 
 def _run_y(run, x0: float, x1: float, pick) -> float | None:

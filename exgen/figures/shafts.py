@@ -11,13 +11,12 @@ import math
 from dataclasses import dataclass
 from typing import Callable, Sequence
 
-from .svg import FONT_SIZE, LINE, THIN, Drawing, on_circle, text_box, text_width
+from .svg import FONT_SIZE, LINE, NOTE_SIZE, THIN, Drawing, on_circle, text_width
 
-SMALL = 14.0          # label font size
 ROW = 16.0            # label line spacing
 DISC_H = 26.0         # half height of a disc seen edge-on
 SHAFT_H = 5.0         # half thickness of the shaft
-SPOKE_MIN, SPOKE_MAX = 26.0, 60.0
+SPOKE_MAX = 58.0      # the longest arm in an end view
 OUTLINE = 70.0        # end view outline radius
 CENTRE_DASH = "10 3 2 3"
 HIDDEN_DASH = "5 3"
@@ -43,12 +42,14 @@ RIGHT_COUNTER_CLOCKWISE = 0.0, False
 
 @dataclass(frozen=True)
 class Spoke:
-    """A mass or crank in the end view: `size` sets its length relative to the others; angle None = unknown."""
+    """A mass or crank in the end view: `size` (its radius) sets its length relative to the others; angle None
+    = unknown."""
 
     name: str
     label: str
     size: float
     angle: float | None
+    mass: float = 0.0  # sets the dot's size; 0 for a crank
 
 
 @dataclass(frozen=True)
@@ -63,14 +64,12 @@ class Plane:
 
 
 def end_view(d: Drawing, c, spokes: Sequence[Spoke], conv: Convention, note: str = "") -> None:
-    """The end view: outline, 0° line, the sense of measurement, spokes with their labels, unknowns listed."""
+    """The end view: outline, 0° line, the sense of measurement, spokes with their labels, unknowns listed.
+    Spokes are drawn to their radii (the largest reaches SPOKE_MAX) and a mass's dot to its mass."""
     d.circle(c, OUTLINE, THIN, cls="outline")
     d.centre_mark(c, 6)
-    placed: list[tuple[float, float, float, float]] = []
     on_zero = any(s.angle is not None and abs(math.sin(s.angle / 2)) < 1e-9 for s in spokes)
     d.line(c, on_circle(c, OUTLINE + (4 if on_zero else 18), conv.zero), THIN, dash=CENTRE_DASH, cls="zero-line")
-    if not on_zero:  # a spoke on the 0° line names it; otherwise the line is labelled
-        _outside_label(d, c, OUTLINE + 22, conv.zero, conv.zero_label, placed, "zero-label")
     sense = math.radians(38) * (1 if conv.clockwise else -1)
     start, end = conv.zero + 0.12 * (1 if conv.clockwise else -1), conv.zero + sense
     r = OUTLINE - 12
@@ -80,42 +79,48 @@ def end_view(d: Drawing, c, spokes: Sequence[Spoke], conv: Convention, note: str
     tip = on_circle(c, r, end)
     tangent = (-math.sin(end), math.cos(end)) if conv.clockwise else (math.sin(end), -math.cos(end))
     d.arrowhead(tip, tangent, 7)
-    label_at = on_circle(c, r - 14, conv.zero + sense * 0.55)
-    d.text((label_at[0], label_at[1] + 5), "\u03b8", size=SMALL, style="italic", cls="sense-label")
+    first = len(d.labels)
     known = [s for s in spokes if s.angle is not None]
-    largest = max((s.size for s in known), default=1.0) or 1.0
-    for spoke in sorted(known, key=lambda s: conv.screen(s.angle) % (2 * math.pi)):
+    longest = max((s.size for s in known), default=1.0) or 1.0
+    heaviest = max((s.mass for s in known if s.mass), default=0.0)
+    ordered = sorted(known, key=lambda s: conv.screen(s.angle) % (2 * math.pi))
+    for spoke in ordered:
         a = conv.screen(spoke.angle)
-        length = SPOKE_MIN + (SPOKE_MAX - SPOKE_MIN) * spoke.size / largest
-        tip = on_circle(c, length, a)
+        tip = on_circle(c, SPOKE_MAX * spoke.size / longest, a)
         d.line(c, tip, 2.2, cls=f"spoke spoke-{spoke.name}")
-        d.circle(tip, 5.0, fill="black", cls=f"mass mass-{spoke.name}")
-        _outside_label(d, c, OUTLINE + 10, a, spoke.label, placed, f"spoke-label label-{spoke.name}")
-    y = max(c[1] + OUTLINE + 34, max((b[3] for b in placed), default=0.0) + ROW + 4)
+        dot = 5.0 if not (spoke.mass and heaviest) else 3.5 + 3.0 * math.sqrt(spoke.mass / heaviest)
+        d.circle(tip, dot, fill="black", cls=f"mass mass-{spoke.name}")
+    label_at = on_circle(c, r - 14, conv.zero + sense * 0.55)
+    d.place([((label_at[0] + dx, label_at[1] + 5 + dy), "middle") for dx, dy in _NUDGES], "\u03b8",
+            style="italic", cls="sense-label")
+    if not on_zero:  # a spoke on the 0° line names it; otherwise the line is labelled
+        _outside_label(d, c, OUTLINE + 22, conv.zero, conv.zero_label, "zero-label")
+    for spoke in ordered:
+        _outside_label(d, c, OUTLINE + 8, conv.screen(spoke.angle), spoke.label, f"spoke-label label-{spoke.name}")
+    y = max([c[1] + OUTLINE + 34] + [b.extent()[3] + ROW + 4 for b in d.labels[first:] if b.extent()[1] > c[1]])
     for spoke in spokes:
         if spoke.angle is None:
-            d.text((c[0], y), spoke.label, size=SMALL, cls=f"unknown label-{spoke.name}")
+            d.text((c[0], y), spoke.label, cls=f"unknown label-{spoke.name}")
             y += ROW
     if note:
-        d.text((c[0], y), note, size=SMALL, style="italic")
+        d.text((c[0], y), note, size=NOTE_SIZE, style="italic")
 
 
-def _outside_label(d: Drawing, c, radius: float, angle: float, text: str, placed: list, cls: str) -> None:
-    """A label just outside the outline in direction `angle`, pushed outwards clear of earlier ones."""
-    cos, sin = math.cos(angle), math.sin(angle)
-    anchor = "start" if cos > 0.35 else "end" if cos < -0.35 else "middle"
-    for step in range(8):
-        x, y = on_circle(c, radius + 14 * step, angle)
-        at = (x, y + 0.3 * SMALL + 0.5 * SMALL * sin)
-        box = text_box(at, text, anchor, SMALL)
-        if not any(_overlap(box, other) for other in placed):
-            break
-    placed.append(box)
-    d.text(at, text, anchor=anchor, size=SMALL, cls=cls)
+_NUDGES = [(0, 0), (0, -6), (0, 6), (-6, 0), (6, 0), (-8, -8), (8, 8), (8, -8), (-8, 8)]
 
 
-def _overlap(a, b, gap: float = 2.0) -> bool:
-    return a[0] < b[2] + gap and b[0] < a[2] + gap and a[1] < b[3] + gap and b[1] < a[3] + gap
+def _outside_label(d: Drawing, c, radius: float, angle: float, text: str, cls: str) -> None:
+    """A label just outside the outline in direction `angle`: pushed outwards, then turned a little either
+    way, until it is clear of the labels and lines already drawn."""
+    candidates = []
+    for step in range(7):
+        for turn in (0.0, 0.12, -0.12, 0.25, -0.25):
+            a = angle + turn * (1 + step / 3)
+            cos, sin = math.cos(a), math.sin(a)
+            anchor = "start" if cos > 0.35 else "end" if cos < -0.35 else "middle"
+            x, y = on_circle(c, radius + 12 * step, a)
+            candidates.append(((x, y + 0.3 * FONT_SIZE + 0.5 * FONT_SIZE * sin), anchor))
+    d.place(candidates, text, cls=cls)
 
 
 def side_view(d: Drawing, planes: Sequence[Plane], length_px: float = 340.0,
@@ -141,27 +146,49 @@ def side_view(d: Drawing, planes: Sequence[Plane], length_px: float = 340.0,
 
 
 def _labels(d: Drawing, placed: list[tuple[float, Plane]]) -> None:
-    """Each plane's label block above it (bearings: beside the pedestal), raised a tier with a leader
-    line where it would run into its left neighbour's."""
-    tiers: list[float] = []  # right edge of the last block in each tier
-    height = max((len(p.lines) for _, p in placed if p.kind != "bearing"), default=1) * ROW + 6
-    for x, plane in placed:
-        if plane.kind == "bearing":
-            d.text((x + 17, SHAFT_H + 17), plane.lines[0], anchor="start", size=SMALL, weight="bold",
-                   cls=f"name-{plane.name}")
-            continue
-        width = max(text_width(t, SMALL) for t in plane.lines)
-        tier = next((i for i, edge in enumerate(tiers) if edge + 8 <= x - width / 2), len(tiers))
-        if tier == len(tiers):
-            tiers.append(0.0)
-        tiers[tier] = x + width / 2
-        base = -DISC_H - 12 - tier * height
-        if tier:
-            d.line((x, -DISC_H - 7), (x, base + 4), THIN, cls="leader")
+    """Each plane's label block above it, in one row kept in the planes' order; blocks that would run
+    into each other are spread apart and joined to their planes by leader lines. Bearings are named
+    beside their pedestals."""
+    above = [(x, p) for x, p in placed if p.kind != "bearing"]
+    widths = [max(text_width(t, FONT_SIZE, bold=i == 0) for i, t in enumerate(p.lines)) for _, p in above]
+    centres = spread([x for x, _ in above], widths, 12.0)
+    moved = any(abs(c - x) > 1 for c, (x, _) in zip(centres, above))
+    base = -DISC_H - 12 - (26 if moved else 0)
+    for c, (x, plane) in zip(centres, above):
+        if abs(c - x) > 1:
+            d.line((x, -DISC_H - 7), (c, base + 4), THIN, cls="leader")
         for i, text in enumerate(reversed(plane.lines)):
             bold = i == len(plane.lines) - 1
-            d.text((x, base - i * ROW), text, size=SMALL, weight="bold" if bold else "",
-                   cls=f"name-{plane.name}" if bold else "")
+            d.text((c, base - i * ROW), text, weight="bold" if bold else "", cls=f"name-{plane.name}" if bold else "")
+    for x, plane in placed:  # beside the pedestal, clear of the dimensions below
+        if plane.kind == "bearing":
+            d.place([((x + 17, SHAFT_H + 17), "start"), ((x - 17, SHAFT_H + 17), "end"),
+                     ((x + 17, SHAFT_H + 32), "start"), ((x - 17, SHAFT_H + 32), "end")],
+                    plane.lines[0], weight="bold", cls=f"name-{plane.name}")
+
+
+def spread(ideal: Sequence[float], widths: Sequence[float], gap: float) -> list[float]:
+    """Centres for blocks of these widths in this order, at least `gap` apart, each as near its ideal
+    centre as the others allow (clusters of touching blocks sit centred on their ideals' mean)."""
+    clusters: list[list[int]] = []  # runs of block indices laid edge to edge
+
+    def layout(cluster):
+        offsets, at = [], 0.0
+        for k, i in enumerate(cluster):
+            if k:
+                at += widths[cluster[k - 1]] / 2 + gap + widths[i] / 2
+            offsets.append(at)
+        shift = sum(ideal[i] - o for i, o in zip(cluster, offsets)) / len(cluster)
+        return [shift + o for o in offsets]
+
+    for i in range(len(ideal)):
+        clusters.append([i])
+        while len(clusters) > 1:
+            left, right = layout(clusters[-2]), layout(clusters[-1])
+            if left[-1] + widths[clusters[-2][-1]] / 2 + gap <= right[0] - widths[clusters[-1][0]] / 2:
+                break
+            clusters[-2:] = [clusters[-2] + clusters[-1]]
+    return [c for cluster in clusters for c in layout(cluster)]
 
 
 def _plane(d: Drawing, x: float, plane: Plane) -> None:
@@ -193,11 +220,11 @@ def chain(d: Drawing, x_of, items: Sequence[tuple[float, float, str]], y: float,
     for a, b, text in items:
         xa, xb = x_of(a), x_of(b)
         d.dimension((xa, y), (xb, y))
-        if text_width(text, SMALL) + 6 <= abs(xb - xa):
-            d.text(((xa + xb) / 2, y - 4), text, size=SMALL, cls="dim-label")
+        if text_width(text, FONT_SIZE) + 6 <= abs(xb - xa):
+            d.text(((xa + xb) / 2, y - 4), text, cls="dim-label")
         else:
             below += 1
-            d.text(((xa + xb) / 2, y + ROW * below), text, size=SMALL, cls="dim-label")
+            d.text(((xa + xb) / 2, y + ROW * below), text, cls="dim-label")
 
 
 def ordinates(d: Drawing, x_of, items: Sequence[tuple[float, str]], top: float = DISC_H + 4) -> None:
@@ -205,12 +232,12 @@ def ordinates(d: Drawing, x_of, items: Sequence[tuple[float, str]], top: float =
     for z, text in items:
         x = x_of(z)
         d.line((x, top), (x, top + 12), THIN, cls="extension")
-        d.text((x + 4.5, top + 17), text, anchor="end", size=SMALL, angle=-90, cls="ordinate")
+        d.text((x + 4.5, top + 17), text, anchor="end", angle=-90, cls="ordinate")
 
 
 def rotation_note(d: Drawing, at, text: str) -> None:
     """A short italic note (a speed, a firing order) at `at`."""
-    d.text(at, text, anchor="start", size=FONT_SIZE - 1, style="italic")
+    d.text(at, text, anchor="start" - 1, style="italic")
 
 
 def fit_width(d: Drawing, width: float) -> None:

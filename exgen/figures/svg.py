@@ -4,17 +4,29 @@ Figures are written directly (no plotting library) so a sheet costs milliseconds
 are printed with two decimals at most, so the same geometry always gives the same bytes.
 Arrowheads are small polygons rather than markers: every SVG renderer (browsers, Typst's
 usvg) draws polygons the same way.
+
+Text is set in the sheets' own family (metrics.py) at one size for every label, and a figure
+states its printed size: one px prints as PT_PER_PX pt on every sheet, so labels print at
+one size in every figure. A drawing remembers each label's box and each line it draws, so a
+label can be placed where it is clear of both (`place`), and tests can check the result.
 """
 from __future__ import annotations
 
 import math
 from xml.sax.saxutils import escape
 
-FONT_FAMILY = "DejaVu Sans, Helvetica, Arial, sans-serif"
-FONT_SIZE = 15
+from .layout import (TextBox, boxes_overlap, circle_hits, path_points, ring_crosses, runs, segment_hits, segments_cross,
+                     text_box, text_width)
+from .metrics import SVG_FAMILY
+
+FONT_SIZE = 14.0  # every label
+NOTE_SIZE = 13.0  # italic remarks ("positions from the left end")
+PT_PER_PX = 0.62  # printed size: 14 px labels print at 8.7 pt, a 758 px figure fills a 16.6 cm text width
+MAX_WIDTH = 758.0  # widest figure that prints at that scale on an A4 sheet's text width
 LINE = 1.3       # outline stroke width
 THIN = 0.8       # dimension and centre lines
 ARROW = 7.0      # arrowhead length
+CLEAR = 2.0      # the least gap between a label and another label or a line
 SUBSCRIPTS = str.maketrans("0123456789", "\u2080\u2081\u2082\u2083\u2084\u2085\u2086\u2087\u2088\u2089")
 
 
@@ -34,25 +46,16 @@ def subscripted(name: str) -> str:
     return head + name[len(head):].translate(SUBSCRIPTS)
 
 
-def text_width(text: str, size: float = FONT_SIZE) -> float:
-    """A generous estimate of a label's width (layout only; fonts differ between renderers)."""
-    return 0.6 * size * len(text)
-
-
-def text_box(at, text: str, anchor: str = "middle", size: float = FONT_SIZE) -> tuple[float, float, float, float]:
-    """The estimated extent (x0, y0, x1, y1) of a label drawn at baseline point `at`."""
-    w = text_width(text, size)
-    x0 = at[0] - {"start": 0.0, "middle": w / 2, "end": w}[anchor]
-    return x0, at[1] - 0.78 * size, x0 + w, at[1] + 0.24 * size
-
-
 class Drawing:
-    """Collects SVG elements; `svg()` wraps them with a viewBox."""
+    """Collects SVG elements; `svg()` wraps them with a viewBox. Remembers label boxes and drawn lines."""
 
     def __init__(self) -> None:
         self.items: list[str] = []
         self.defs: list[str] = []
         self.box = [math.inf, math.inf, -math.inf, -math.inf]  # x0, y0, x1, y1 of what is drawn
+        self.labels: list[TextBox] = []
+        self.segments: list[tuple[tuple[float, float], tuple[float, float]]] = []
+        self.rings: list[tuple[tuple[float, float], float]] = []  # circle outlines
 
     def add(self, element: str) -> None:
         self.items.append(element)
@@ -64,6 +67,7 @@ class Drawing:
 
     def line(self, a, b, width: float = LINE, dash: str = "", cls: str = "") -> None:
         self.extend(min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]))
+        self.segments.append((tuple(a), tuple(b)))
         extra = f' stroke-dasharray="{dash}"' if dash else ""
         extra += f' class="{cls}"' if cls else ""
         self.add(f'<line x1="{num(a[0])}" y1="{num(a[1])}" x2="{num(b[0])}" y2="{num(b[1])}" '
@@ -72,6 +76,7 @@ class Drawing:
     def circle(self, c, r: float, width: float = LINE, fill: str = "none", dash: str = "",
                cls: str = "") -> None:
         self.extend(c[0] - r, c[1] - r, c[0] + r, c[1] + r)
+        self.rings.append((tuple(c), r))
         extra = f' stroke-dasharray="{dash}"' if dash else ""
         extra += f' class="{cls}"' if cls else ""
         self.add(f'<circle cx="{num(c[0])}" cy="{num(c[1])}" r="{num(r)}" fill="{fill}" '
@@ -79,7 +84,11 @@ class Drawing:
 
     def path(self, d: str, width: float = LINE, fill: str = "none", dash: str = "", cls: str = "",
              clip: str = "") -> None:
-        """A path; its extent is not tracked (callers draw paths inside tracked shapes or call extend)."""
+        """A path; its extent is not tracked (callers draw paths inside tracked shapes or call extend).
+        Its outline is remembered unless it is clipped (hidden lines inside a part in front)."""
+        if not clip:
+            for points in path_points(d):
+                self.segments.extend(zip(points, points[1:]))
         extra = f' stroke-dasharray="{dash}"' if dash else ""
         extra += f' class="{cls}"' if cls else ""
         extra += f' clip-path="url(#{clip})"' if clip else ""
@@ -88,28 +97,59 @@ class Drawing:
     def polygon(self, points, fill: str = "black", width: float = 0) -> None:
         self.extend(min(p[0] for p in points), min(p[1] for p in points),
                     max(p[0] for p in points), max(p[1] for p in points))
+        if fill != "black":  # an outlined shape; a solid arrowhead is part of its line
+            self.segments.extend(zip(points, list(points[1:]) + [points[0]]))
         self.add(f'<polygon points="{pts(*points)}" fill="{fill}" stroke-width="{num(width)}"/>')
 
     def text(self, at, content: str, anchor: str = "middle", size: float = FONT_SIZE,
-             weight: str = "", style: str = "", cls: str = "", angle: float = 0.0) -> None:
-        """A label with its baseline at `at`, optionally turned by `angle` degrees about that point."""
-        x0, y0, x1, y1 = text_box(at, content, anchor, size)
-        t = math.radians(angle)
-        corners = [(at[0] + (x - at[0]) * math.cos(t) - (y - at[1]) * math.sin(t),
-                    at[1] + (x - at[0]) * math.sin(t) + (y - at[1]) * math.cos(t))
-                   for x, y in ((x0, y0), (x1, y0), (x0, y1), (x1, y1))]
-        self.extend(min(c[0] for c in corners), min(c[1] for c in corners),
-                    max(c[0] for c in corners), max(c[1] for c in corners))
+             weight: str = "", style: str = "", cls: str = "", angle: float = 0.0) -> TextBox:
+        """A label with its baseline at `at`, optionally turned by `angle` degrees about that point.
+        Digits written as Unicode sub- or superscripts are set as smaller digits in the same font."""
+        box = text_box(at, content, anchor, size, weight == "bold", style == "italic", angle)
+        self.extend(*box.extent())
+        self.labels.append(box)
         extra = f' font-size="{num(size)}"' if size != FONT_SIZE else ""
         extra += f' transform="rotate({num(angle)} {num(at[0])} {num(at[1])})"' if angle else ""
         extra += f' font-weight="{weight}"' if weight else ""
         extra += f' font-style="{style}"' if style else ""
         extra += f' class="{cls}"' if cls else ""
         self.add(f'<text x="{num(at[0])}" y="{num(at[1])}" text-anchor="{anchor}" stroke="none" '
-                 f'fill="black"{extra}>{escape(content)}</text>')
+                 f'fill="black"{extra}>{_tspans(content, size)}</text>')
+        return box
 
     def clip_circle(self, ident: str, c, r: float) -> None:
         self.defs.append(f'<clipPath id="{ident}"><circle cx="{num(c[0])}" cy="{num(c[1])}" r="{num(r)}"/></clipPath>')
+
+    # ---- keeping labels clear --------------------------------------------------------------
+
+    def clashes(self, box: TextBox, gap: float = CLEAR) -> int:
+        """How many labels and drawn lines `box` would touch (0: it is clear)."""
+        count = sum(boxes_overlap(box, other, gap) for other in self.labels)
+        count += sum(segment_hits(box, p, q, gap) for p, q in self.segments)
+        return count + sum(circle_hits(box, c, r, gap) for c, r in self.rings)
+
+    def crosses(self, points, gap: float = CLEAR) -> int:
+        """How many drawn lines and labels the polyline `points` would cross or touch."""
+        count = 0
+        for p, q in zip(points, points[1:]):
+            count += sum(segments_cross(p, q, a, b) for a, b in self.segments)
+            count += sum(ring_crosses(p, q, c, r) for c, r in self.rings)
+            count += sum(segment_hits(box, p, q, gap) for box in self.labels)
+        return count
+
+    def place(self, candidates, content: str, size: float = FONT_SIZE, weight: str = "", style: str = "",
+              cls: str = "", angle: float = 0.0) -> TextBox:
+        """The label at the first of `candidates` ((at, anchor) pairs) where it is clear of every label and
+        line so far; where none is clear, at the one it clashes least with (ties to the earliest)."""
+        best, fewest = None, math.inf
+        for at, anchor in candidates:
+            box = text_box(at, content, anchor, size, weight == "bold", style == "italic", angle)
+            count = self.clashes(box)
+            if count < fewest:
+                best, fewest = (at, anchor), count
+            if count == 0:
+                break
+        return self.text(best[0], content, best[1], size, weight, style, cls, angle)
 
     # ---- composite marks -----------------------------------------------------------------
 
@@ -145,12 +185,12 @@ class Drawing:
         self.arrowhead(p1, tangent, ARROW * 1.1)
 
     def svg(self, title: str = "", pad: float = 6.0) -> str:
-        """The document, its viewBox fitted to everything drawn plus `pad`."""
+        """The document, its viewBox fitted to everything drawn plus `pad`, its size in pt at the common scale."""
         x0, y0 = self.box[0] - pad, self.box[1] - pad
         width, height = self.box[2] + pad - x0, self.box[3] + pad - y0
         head = (f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="{num(x0)} {num(y0)} {num(width)} {num(height)}" '
-                f'width="{num(width)}" height="{num(height)}" font-family="{FONT_FAMILY}" '
-                f'font-size="{FONT_SIZE}" stroke="black" stroke-linecap="round" stroke-linejoin="round">')
+                f'width="{num(width * PT_PER_PX)}pt" height="{num(height * PT_PER_PX)}pt" font-family="{SVG_FAMILY}" '
+                f'font-size="{num(FONT_SIZE)}" stroke="black" stroke-linecap="round" stroke-linejoin="round">')
         parts = [head]
         if title:
             parts.append(f"<title>{escape(title)}</title>")
@@ -174,3 +214,20 @@ def on_circle(c, r: float, angle: float) -> tuple[float, float]:
 
 def lerp(a, b, t: float) -> tuple[float, float]:
     return a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t
+
+
+def _tspans(content: str, size: float) -> str:
+    """The label's text, its sub- and superscripts as smaller digits shifted off the baseline (dy: every
+    SVG renderer supports it, unlike baseline-shift)."""
+    out, offset = [], 0.0
+    for run in runs(content):
+        dy = run.dy * size - offset
+        offset += dy
+        text = escape(run.text)
+        if run.shift:
+            out.append(f'<tspan dy="{num(dy)}" font-size="{num(size * run.scale)}">{text}</tspan>')
+        elif dy:
+            out.append(f'<tspan dy="{num(dy)}">{text}</tspan>')
+        else:
+            out.append(text)
+    return "".join(out)

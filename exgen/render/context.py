@@ -27,9 +27,11 @@ def figure_caption(number: int, svg: str | None) -> str:
     return f"Figure {number}" + (f": {found.group(1).strip()}" if found else "")
 
 
-def sheet_context(sheet, target, figures: dict[str, str], svgs: dict[str, str], key: bool = False) -> dict:
+def sheet_context(sheet, target, figures: dict[str, str], svgs: dict[str, str], key: bool = False,
+                  key_figures: dict[str, list[tuple[str, str]]] | None = None) -> dict:
     """The whole sheet. `figures` maps a slot to what the layout embeds (a file path, or SVG
-    source for Typst); `svgs` maps a slot to the figure's SVG text, read for its caption."""
+    source for Typst); `svgs` maps a slot to the figure's SVG text, read for its caption;
+    `key_figures` maps a slot to the (embed, caption) of each figure only the key shows."""
     a, s = sheet.assignment, sheet.student
     return {
         "key": key,
@@ -43,12 +45,13 @@ def sheet_context(sheet, target, figures: dict[str, str], svgs: dict[str, str], 
         "due": target.prose(a.due),
         "total": plural(sheet.points),
         "instructions": target.text(a.instructions) if a.instructions else "",
-        "questions": [question_context(q, target, figures.get(q.slot), svgs.get(q.slot), key)
+        "questions": [question_context(q, target, figures.get(q.slot), svgs.get(q.slot), key,
+                                       (key_figures or {}).get(q.slot, ()))
                       for q in sheet.questions],
     }
 
 
-def question_context(question, target, figure: str | None, svg: str | None, key: bool) -> dict:
+def question_context(question, target, figure: str | None, svg: str | None, key: bool, key_figures=()) -> dict:
     v = question.variant
     parts = []
     for part in v.template.parts:
@@ -70,6 +73,8 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
     }
     if key:
         context.update(key_context(v, target))
+        # beside the working: the polygons and diagrams the textbook draws (never on a sheet)
+        context["key_figures"] = [{"figure": embed, "caption": target.prose(caption)} for embed, caption in key_figures]
     return context
 
 

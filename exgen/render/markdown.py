@@ -3,15 +3,10 @@ from __future__ import annotations
 
 import re
 
-from ..figures import figure_svg
+from ..figures import draw_figures
 from .context import sheet_context
 from .jinja import render
 from .targets import MARKDOWN
-
-
-def _svgs(sheet, figure_files: dict[str, str]) -> dict[str, str]:
-    """The SVG text of each question that has a figure file, read for its caption."""
-    return {q.slot: figure_svg(q.variant) or "" for q in sheet.questions if q.slot in figure_files}
 
 
 def _tidy(text: str) -> str:
@@ -19,13 +14,20 @@ def _tidy(text: str) -> str:
     return re.sub(r"\n{3,}", "\n\n", text).strip() + "\n"
 
 
-def sheet_markdown(sheet, figure_files: dict[str, str]) -> str:
-    """The student's sheet; `figure_files` maps a slot ("q1") to the SVG file's relative path."""
-    context = sheet_context(sheet, MARKDOWN, figure_files, _svgs(sheet, figure_files), key=False)
-    return _tidy(render("sheet.md.j2", context))
+def _context(sheet, figures, key: bool) -> dict:
+    """Figures are embedded by file name (written beside the Markdown by whoever writes it)."""
+    figures = draw_figures(sheet) if figures is None else figures
+    sheet_figures = {slot: f.sheet for slot, f in figures.items() if f.sheet}
+    key_figures = {slot: [(d.name, d.title) for d in f.key] for slot, f in figures.items()} if key else {}
+    return sheet_context(sheet, MARKDOWN, {slot: d.name for slot, d in sheet_figures.items()},
+                         {slot: d.svg for slot, d in sheet_figures.items()}, key=key, key_figures=key_figures)
 
 
-def key_markdown(sheet, figure_files: dict[str, str]) -> str:
-    """The instructor's key: the sheet plus given data, worked solutions and an answers table."""
-    context = sheet_context(sheet, MARKDOWN, figure_files, _svgs(sheet, figure_files), key=True)
-    return _tidy(render("key.md.j2", context))
+def sheet_markdown(sheet, figures=None) -> str:
+    """The student's sheet; `figures` is the sheet's `draw_figures` (drawn here when not given; {} for none)."""
+    return _tidy(render("sheet.md.j2", _context(sheet, figures, key=False)))
+
+
+def key_markdown(sheet, figures=None) -> str:
+    """The instructor's key: the sheet plus given data, worked solutions, key-only figures and answers."""
+    return _tidy(render("key.md.j2", _context(sheet, figures, key=True)))

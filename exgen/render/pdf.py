@@ -9,7 +9,8 @@ from __future__ import annotations
 import typst
 
 from ..errors import ExgenError
-from ..figures import figure_svg
+from ..figures import draw_figures
+from ..figures.metrics import FAMILY
 from .context import sheet_context
 from .jinja import render
 from .targets import TYPST
@@ -23,13 +24,17 @@ class PdfError(ExgenError, RuntimeError):
         super().__init__(f"cannot typeset {what}: {message}")
 
 
-def _context(sheet, key: bool) -> dict:
-    svgs = {q.slot: svg for q in sheet.questions if (svg := figure_svg(q.variant))}
-    context = sheet_context(sheet, TYPST, svgs, svgs, key=key)
+def _context(sheet, key: bool, figures=None) -> dict:
+    """Figures are embedded as SVG text; `figures` is the sheet's `draw_figures` (drawn here when not given)."""
+    figures = draw_figures(sheet) if figures is None else figures
+    svgs = {slot: f.sheet.svg for slot, f in figures.items() if f.sheet}
+    key_figures = {slot: [(d.svg, d.title) for d in f.key] for slot, f in figures.items()} if key else {}
+    context = sheet_context(sheet, TYPST, svgs, svgs, key=key, key_figures=key_figures)
     a, s = sheet.assignment, sheet.student
     kind = "Instructor key" if key else "Tutorial sheet"
     context["doc_title"] = f"{kind}: {a.title} ({s.id})"
     context["doc_author"] = a.course or a.title
+    context["font"] = FAMILY  # the figures' family: one typeface for text and figures
     pieces = [TYPST.prose(a.course), TYPST.prose(a.title), f"Sheet {TYPST.prose(sheet.code)}"]
     if key:
         pieces.insert(0, "*Instructor key*")
@@ -39,14 +44,14 @@ def _context(sheet, key: bool) -> dict:
     return context
 
 
-def sheet_typst(sheet) -> str:
+def sheet_typst(sheet, figures=None) -> str:
     """The Typst source of the student's sheet."""
-    return render("sheet.typ.j2", _context(sheet, key=False))
+    return render("sheet.typ.j2", _context(sheet, False, figures))
 
 
-def key_typst(sheet) -> str:
+def key_typst(sheet, figures=None) -> str:
     """The Typst source of the instructor's key."""
-    return render("key.typ.j2", _context(sheet, key=True))
+    return render("key.typ.j2", _context(sheet, True, figures))
 
 
 def compile_pdf(source: str, what: str = "a document") -> bytes:
@@ -56,9 +61,9 @@ def compile_pdf(source: str, what: str = "a document") -> bytes:
         raise PdfError(what, str(exc).strip().splitlines()[0] if str(exc).strip() else repr(exc)) from exc
 
 
-def sheet_pdf(sheet) -> bytes:
-    return compile_pdf(sheet_typst(sheet), f"the sheet of {sheet.student.id}")
+def sheet_pdf(sheet, figures=None) -> bytes:
+    return compile_pdf(sheet_typst(sheet, figures), f"the sheet of {sheet.student.id}")
 
 
-def key_pdf(sheet) -> bytes:
-    return compile_pdf(key_typst(sheet), f"the key of {sheet.student.id}")
+def key_pdf(sheet, figures=None) -> bytes:
+    return compile_pdf(key_typst(sheet, figures), f"the key of {sheet.student.id}")
