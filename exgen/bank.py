@@ -24,7 +24,7 @@ from .template import MistakeSpec, ParamSpec, PartSpec, Template
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure", "key_figures"}
-PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value"}
+PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
 MAX_VALUES = 100_000
 
@@ -111,6 +111,10 @@ def _parse(text: str):
         loader.dispose()
 
 
+def _is_text(spec: ParamSpec) -> bool:
+    return bool(spec.choices) and all(isinstance(c, str) for c in spec.choices)
+
+
 class _Reader:
     """Turns parsed YAML into a Template, collecting errors with their lines."""
 
@@ -189,7 +193,11 @@ class _Reader:
             self.unknown_keys(spec, PARAM_KEYS, where)
             common = dict(name=name, unit=str(spec.get("unit", "")), label=str(spec.get("label", "")),
                           symbol=str(spec.get("symbol", "")))
-            if "value" in spec:
+            if "equals" in spec:
+                formula = self.derived(spec["equals"], {p.name for p in out if not _is_text(p)}, where + ("equals",))
+                if formula:
+                    out.append(ParamSpec(**common, equals=formula))
+            elif "value" in spec:
                 out.append(ParamSpec(**common, choices=(self.number_or_text(spec["value"]),)))
             elif "choices" in spec:
                 choices = spec["choices"]
@@ -214,6 +222,18 @@ class _Reader:
                     continue
                 out.append(ParamSpec(**common, min=low, max=high, step=step))
         return tuple(out)
+
+    def derived(self, formula, earlier: set, where) -> str:
+        """An `equals:` expression over earlier numeric parameters (checked, not yet evaluated)."""
+        try:
+            unknown = expr.names_in(expr.parse(str(formula))) - earlier
+        except expr.ExpressionError as exc:
+            self.error(where, str(exc))
+            return ""
+        if unknown:
+            self.error(where, f"names no earlier numeric parameter: {', '.join(sorted(unknown))}")
+            return ""
+        return str(formula)
 
     @staticmethod
     def number_or_text(value):

@@ -32,7 +32,17 @@ def uniform_index(rng: np.random.Generator, n: int) -> int:
 
 def draw_values(template: Template, rng: np.random.Generator) -> dict[str, Decimal | str]:
     """One candidate set of printed values, in the template's parameter order."""
-    return {p.name: p.value_at(uniform_index(rng, p.count)) for p in template.params}
+    values: dict[str, Decimal | str] = {}
+    for p in template.params:
+        values[p.name] = derived_value(p.equals, values) if p.derived else p.value_at(uniform_index(rng, p.count))
+    return values
+
+
+def derived_value(formula: str, values: dict) -> Decimal:
+    """An `equals:` parameter from the printed values of earlier ones, to 12 significant figures:
+    exact for the sums and multiples of stepped values it is meant for (a loop that closes a cycle)."""
+    numbers = {k: float(v) for k, v in values.items() if isinstance(v, Decimal)}
+    return Decimal(f"{float(expr.evaluate(formula, numbers)):.12g}")
 
 
 def si_values(template: Template, values: dict) -> dict[str, float | str]:

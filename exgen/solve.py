@@ -8,7 +8,7 @@ from __future__ import annotations
 from decimal import Decimal
 
 from . import units
-from .draw import failed_requirement, si_values
+from .draw import derived_value, failed_requirement, si_values
 from .errors import ExgenError, QuantityError
 from .template import Template
 from .variant import Variant, build_variant
@@ -34,7 +34,7 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
     """Each parameter's value in the template's own unit, from what the user typed."""
     names = {p.name for p in template.params}
     unknown = sorted(set(given) - names)
-    missing = [p for p in template.params if p.name not in given]
+    missing = [p for p in template.params if p.name not in given and not p.derived]
     problems = []
     if unknown:
         problems.append(f"{template.id} has no parameter(s) {', '.join(unknown)}")
@@ -45,6 +45,9 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
         raise ExgenError("; ".join(problems))
     values = {}
     for spec in template.params:
+        if spec.derived:
+            values[spec.name] = _derived(spec, values, given.get(spec.name))
+            continue
         text = given[spec.name]
         if spec.choices and all(isinstance(c, str) for c in spec.choices):
             if text not in spec.choices:
@@ -58,6 +61,22 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
             raise ExgenError(f"{spec.name}={text}: {exc}") from exc
         values[spec.name] = _exact(value)
     return values
+
+
+def _derived(spec, values: dict, text: str | None) -> Decimal:
+    """A parameter the template works out from others; a value the user gives must agree with it."""
+    value = derived_value(spec.equals, values)
+    if text is not None:
+        try:
+            reading = units.parse_quantity(text)
+            typed = reading.value if reading.unit is None else units.convert(reading.value, reading.unit, spec.unit)
+        except (QuantityError, ExgenError) as exc:
+            raise ExgenError(f"{spec.name}={text}: {exc}") from exc
+        if abs(typed - float(value)) > 1e-9 * max(abs(float(value)), 1.0):
+            shown = f"{units.format_decimal(value)} {units.pretty_unit(spec.unit)}".strip()
+            raise ExgenError(f"{spec.name} is worked out from the others ({spec.equals} = {shown}); "
+                             f"{text!r} disagrees: leave it out or check the others")
+    return value
 
 
 def solve(template: Template, given: dict[str, str]) -> tuple[Variant, list[str]]:

@@ -22,6 +22,11 @@ class ParamSpec:
     max: Decimal | None = None
     step: Decimal | None = None
     choices: tuple = ()
+    equals: str = ""  # a given worked out from earlier ones (e.g. the loop that closes a cycle)
+
+    @property
+    def derived(self) -> bool:
+        return bool(self.equals)
 
     @property
     def is_range(self) -> bool:
