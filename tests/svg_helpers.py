@@ -3,6 +3,7 @@ import dataclasses
 import xml.etree.ElementTree as ET
 from decimal import Decimal
 
+from exgen.draw import derived_value
 from exgen.figures import checks
 from exgen.variant import build_variant, make_variant
 
@@ -17,6 +18,9 @@ def variant_of(bank, template_id, seed=1, extra=(), **values):
         template = dataclasses.replace(template, params=template.params + tuple(extra))
     printed = {p.name: p.exact for p in make_variant(template, seed).params}
     printed.update({k: v if isinstance(v, str) else Decimal(str(v)) for k, v in values.items()})
+    for spec in template.params:  # givens worked out from others follow the replaced values
+        if spec.derived and spec.name not in values:
+            printed[spec.name] = derived_value(spec.equals, printed)
     return build_variant(template, printed, check=False)
 
 

@@ -1,0 +1,145 @@
+"""Worked derivations for turning-moment diagrams (course text chapter 3, Examples 3.1-3.2, Problem 3.1).
+
+The text's method: call the energy at the first crossing of the torque curve and the mean line
+U (here 0), add each loop above the line and take away each loop below it, crossing by
+crossing; the greatest and least energies are where the speed is greatest and least, and
+their difference, scaled by what one mm² of the diagram stands for, is the maximum
+fluctuation of energy ΔE = I ω² C_s (eq 3.5).
+"""
+from __future__ import annotations
+
+import math
+import string
+
+from ..mechanics import flywheels as fw
+
+#: A named mistake is recorded only where it lands this far from the right value (parts at 1 %).
+APART = 0.03
+MM2 = 1e-6
+
+
+def _apart(right: float, wrong: float, rel: float = APART) -> bool:
+    return abs(wrong - right) >= rel * abs(right)
+
+
+def _loop_areas(p, count: int) -> list[float]:
+    """The loop areas in mm², signed: above the mean line positive."""
+    areas = [round(getattr(p, f"a{i}") / MM2, 9) for i in range(1, count + 1)]
+    return fw.alternate(areas, first_above=(p.first == "above"))
+
+
+def _crossings(p, d, count: int, name_extremes: bool) -> tuple[float, float]:
+    """Energy at each crossing (mm² of diagram, from E_A = 0), and where it is greatest and least.
+
+    Returns ΔA, greatest less least, and the largest single loop (a known slip takes it for ΔA).
+    When a part asks where the speed is greatest or least, no two crossings may nearly tie.
+    """
+    signed = _loop_areas(p, count)
+    levels = fw.crossing_energies(signed)
+    letters = string.ascii_uppercase[: count + 1]
+    d.step("E_A", 0.0, "mm^2", formula="", note="the energy at A is taken as U = 0")
+    for i, area in enumerate(signed):
+        sign = "+" if area > 0 else "-"
+        d.step(f"E_{letters[i + 1]}", levels[i + 1], "mm^2", formula=rf"@E_{letters[i]} {sign} {abs(area):g}",
+               note="the cycle closes: back to the energy at A" if i == count - 1 else "")
+    swing, high, low = fw.fluctuation_from_areas(signed)
+    if name_extremes:
+        ranked = sorted(levels[:-1], reverse=True)
+        d.require(ranked[0] - ranked[1] >= 0.02 * swing and ranked[-2] - ranked[-1] >= 0.02 * swing,
+                  "two crossings nearly tie for the greatest or least energy")
+        d.step("fastest", letters[high], "", symbol=r"\omega_{\max}\ \text{at}", note="the greatest energy")
+        d.step("slowest", letters[low], "", symbol=r"\omega_{\min}\ \text{at}", note="the least energy")
+        d.mistake("fastest", "least_for_greatest", letters[low])
+        d.mistake("slowest", "least_for_greatest", letters[high])
+    dA = d.step("dA", swing, "mm^2", symbol=r"\Delta A", formula=rf"@E_{letters[high]} - @E_{letters[low]}",
+                note="greatest less least energy, in mm² of diagram")
+    return dA, max(abs(a) for a in signed)
+
+
+def _energy(p, d, dA: float, largest: float) -> float:
+    """ΔE in joules from ΔA in mm², with the slips of the scales."""
+    e = d.step("e", fw.energy_per_area(p.Ts, p.As), "J/mm^2", symbol=r"e",
+               formula=r"@Ts\,@As", note="one mm² of the diagram: torque per mm × radians per mm")
+    delta_e = d.step("dE", dA * e, "J", symbol=r"\Delta E", formula=r"@dA\,@e")
+    d.mistake("dE", "one_scale_only", dA * p.Ts)
+    d.mistake("dE", "angle_scale_in_degrees", dA * p.Ts * math.degrees(p.As))
+    if _apart(delta_e, largest * e):
+        d.mistake("dE", "largest_loop", largest * e)
+    return delta_e
+
+
+def speed_fluctuation(p, d):
+    """Example 3.1: energies at the crossings, ΔE, and the coefficient of fluctuation of speed."""
+    dA, largest = _crossings(p, d, 6, name_extremes=True)
+    delta_e = _energy(p, d, dA, largest)
+    inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2")
+    cs = d.step("Cs", fw.coefficient_of_fluctuation(delta_e, inertia, p.N), "", symbol=r"C_s",
+                formula=r"\frac{@dE}{@I\,@N^2}", note="eq 3.5: the total band (ω₁ − ω₂)/ω")
+    d.require(0.001 <= cs <= 0.05, "a fluctuation of speed no engine flywheel is designed for")
+    d.mistake("Cs", "rpm_as_rad_s", delta_e / (inertia * (p.N * 60 / (2 * math.pi)) ** 2))
+    d.mistake("Cs", "half_band", cs / 2)
+    d.mistake("Cs", "k_not_squared", delta_e / (p.m * p.k * p.N ** 2))
+
+
+def flywheel_rim(p, d):
+    """Problem 3.1: ΔE from nine loops; the rim mass for a speed band; its rectangular section."""
+    dA, largest = _crossings(p, d, 9, name_extremes=False)
+    delta_e = _energy(p, d, dA, largest)
+    inertia = d.step("I", fw.inertia_for(delta_e, p.N, p.Cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}",
+                     note="eq 3.5 solved for I")
+    radius = d.step("R", p.D / 2, "m", formula=r"\frac{@D}{2}", note="the rim's mean radius")
+    mass = d.step("m", fw.rim_mass(inertia, radius), "kg", formula=r"\frac{@I}{@R^2}",
+                  note="the rim's mass all at the mean radius; the arms are neglected")
+    d.mistake("m", "rpm_as_rad_s", delta_e / ((p.N * 60 / (2 * math.pi)) ** 2 * p.Cs) / radius ** 2)
+    d.mistake("m", "diameter_for_radius", inertia / p.D ** 2)
+    d.mistake("m", "total_read_as_plus_minus", inertia / 2 / radius ** 2)
+    area = d.step("A", mass / (p.rho * 2 * math.pi * radius), "m^2", formula=r"\frac{@m}{@rho\,2\pi\,@R}",
+                  note="mass = density × mean circumference × section")
+    thickness = d.step("t", math.sqrt(area / p.ratio), "m", formula=r"\sqrt{\frac{@A}{@ratio}}",
+                       note="the section is b × t with b = k t")
+    d.mistake("t", "square_section", math.sqrt(area))
+    d.mistake("t", "ratio_inverted", math.sqrt(area * p.ratio))
+    d.step("b", p.ratio * thickness, "m", formula=r"@ratio\,@t")
+    d.mistake("b", "square_section", math.sqrt(area))
+    d.mistake("b", "ratio_inverted", thickness / p.ratio)
+    rim_speed = d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
+                       note="a cast-iron rim is kept below about 35 m/s")
+    d.require(rim_speed <= 35, "a rim faster than cast iron stands")
+    d.require(20 <= mass <= 3000 and 0.015 <= thickness <= 0.3, "a rim no engine would carry")
+
+
+# ---- Example 3.2: a torque-time diagram ----------------------------------------------------------
+
+
+def torque_time(p, d):
+    """Example 3.2: a constant-torque motor feeding a machine whose torque rises in one trapezoidal pulse."""
+    w = p.N
+    peak_area = d.step("A_pulse", 0.5 * ((p.t4 - p.t1) + (p.t3 - p.t2)) * (p.tau_p - p.tau_0), "N*m*s",
+                       symbol=r"A_{\mathrm{pulse}}", formula=r"\tfrac{1}{2}\left[(@t4 - @t1) + (@t3 - @t2)\right](@tau_p - @tau_0)",
+                       note="the trapezium above the base torque")
+    work = d.step("W", (p.tau_0 * p.T + peak_area) * w, "J", formula=r"(@tau_0\,@T + @A_pulse)\,@N",
+                  note="work per cycle = area under the torque-time graph × ω (θ = ωt)")
+    tau_m = d.step("tau_M", work / (w * p.T), "N*m", symbol=r"\tau_M", formula=r"\frac{@W}{@N\,@T}",
+                   note="the motor does the same work in a cycle at constant torque")
+    d.mistake("tau_M", "peak_base_average", (p.tau_p + p.tau_0) / 2)
+    d.mistake("tau_M", "base_left_out", peak_area / p.T)
+    d.step("P", tau_m * w, "W", symbol=r"P_M", formula=r"@tau_M\,@N")
+    d.mistake("P", "rpm_as_rad_s", tau_m * w * 60 / (2 * math.pi))
+    rise = (tau_m - p.tau_0) / (p.tau_p - p.tau_0)
+    x = d.step("x", p.t1 + (p.t2 - p.t1) * rise, "s", formula=r"@t1 + (@t2 - @t1)\frac{@tau_M - @tau_0}{@tau_p - @tau_0}",
+               note="where the rising torque crosses the mean line")
+    y = d.step("y", p.t4 - (p.t4 - p.t3) * rise, "s", formula=r"@t4 - (@t4 - @t3)\frac{@tau_M - @tau_0}{@tau_p - @tau_0}",
+               note="where the falling torque crosses it")
+    delta_e = d.step("dE", 0.5 * ((y - x) + (p.t3 - p.t2)) * w * (p.tau_p - tau_m), "J", symbol=r"\Delta E",
+                     formula=r"\tfrac{1}{2}\left[(@y - @x) + (@t3 - @t2)\right]\,@N\,(@tau_p - @tau_M)",
+                     note="the area above the mean torque line: the flywheel gives this up")
+    d.mistake("dE", "area_above_base", peak_area * w)
+    d.mistake("dE", "time_not_converted", delta_e / w)
+    d.mistake("dE", "rpm_as_rad_s", delta_e * 60 / (2 * math.pi))
+    inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2")
+    cs = d.step("Cs", fw.coefficient_of_fluctuation(delta_e, inertia, w), "", symbol=r"C_s",
+                formula=r"\frac{@dE}{@I\,@N^2}", note="eq 3.5: the total fluctuation (ω₁ − ω₂)/ω")
+    d.mistake("Cs", "half_band", cs / 2)
+    d.mistake("Cs", "rpm_as_rad_s", delta_e / (inertia * (w * 60 / (2 * math.pi)) ** 2))
+    d.require(0.005 <= cs <= 0.12, "a fluctuation of speed no machine flywheel is designed for")
+    d.require(150 <= tau_m * w <= 60e3, "a motor of unusual size for the machine")

@@ -1,0 +1,90 @@
+"""Flywheel figures: loops drawn with areas in proportion to the data, torque-time drawn to scale."""
+import re
+
+import pytest
+
+from exgen.figures import figure_svg
+from exgen.figures.flywheels import loop_diagram, torque_time
+from exgen.figures.svg import text_box
+from exgen.variant import make_variant
+from svg_helpers import elements, root, texts, variant_of
+
+SVG = "{http://www.w3.org/2000/svg}"
+EXAMPLE_3_1 = dict(a1=295, a2=685, a3=40, a4=340, a5=960, a6=270, first="above")
+
+
+def _curve(svg: str) -> list[tuple[float, float]]:
+    (path,) = elements(svg, "torque-curve", "path")
+    return [(float(x), float(y)) for x, y in re.findall(r"(-?[\d.]+),(-?[\d.]+)", path.get("d"))]
+
+
+def _lobes(points):
+    """Signed areas (up positive) of the stretches between returns to the mean line y = 0."""
+    areas, area = [], 0.0
+    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+        area += (x1 - x0) * -(y0 + y1) / 2
+        if y1 == 0:
+            areas.append(area)
+            area = 0.0
+    return areas
+
+
+@pytest.mark.parametrize("template_id, count", [("flywheels.speed_fluctuation", 6), ("flywheels.flywheel_rim", 9)])
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_loop_areas_are_in_proportion_to_the_data(bank, template_id, count, seed):
+    variant = make_variant(bank.get(template_id), seed)
+    lobes = _lobes(_curve(loop_diagram(variant)))
+    data = [variant.param(f"a{i}").si for i in range(1, count + 1)]
+    sign = 1 if variant.param("first").exact == "above" else -1
+    assert len(lobes) == count
+    for i, (lobe, area) in enumerate(zip(lobes, data)):
+        assert lobe * sign * (-1) ** i > 0                     # alternately above and below, from the first
+        assert abs(lobe) / abs(lobes[0]) == pytest.approx(area / data[0], rel=2e-3)
+
+
+def test_example_3_1_labels(bank):
+    variant = variant_of(bank, "flywheels.speed_fluctuation", **EXAMPLE_3_1)
+    labels = texts(loop_diagram(variant))
+    for expected in ("295 mm²", "685 mm²", "40 mm²", "340 mm²", "960 mm²", "270 mm²", "mean torque"):
+        assert expected in labels
+    assert set("ABCDEFG") <= set(labels)
+
+
+def test_crossing_letters_sit_on_the_empty_side(bank):
+    svg = loop_diagram(variant_of(bank, "flywheels.speed_fluctuation", **EXAMPLE_3_1))
+    letters = {"".join(t.itertext()): float(t.get("y")) for t in root(svg).iter(f"{SVG}text")
+               if t.get("class") == "crossing"}
+    # loop 1 is above, so A's letter is below the line; B starts loop 2, below, so B's letter is above
+    assert letters["A"] > 0 and letters["B"] < 0 and letters["C"] > 0 and letters["G"] > 0
+
+
+def test_torque_time_is_drawn_to_scale(bank):
+    variant = variant_of(bank, "flywheels.torque_time", tau_0=5.5, tau_p=44, t1=0.5, rise=0.2, dwell=0.2,
+                         fall=0.2, idle=0.9)
+    svg = torque_time(variant)
+    points = _curve(svg)
+    (x0, y0), (x1, _), (x2, y2), (x3, _), (x4, _), (x5, _) = points
+    assert (x1 / x5, x2 / x5, x3 / x5, x4 / x5) == pytest.approx((0.25, 0.35, 0.45, 0.55), abs=1e-4)
+    assert y2 / y0 == pytest.approx(44 / 5.5, rel=1e-3)
+    labels = texts(svg)
+    for expected in ("5.5 N·m", "44 N·m", "0.5 s", "0.7 s", "0.9 s", "1.1 s", "2 s", "mean torque = ?"):
+        assert expected in labels
+    (mean,) = elements(svg, "mean-line")
+    assert float(mean.get("y1")) / y2 == pytest.approx(13.2 / 44, rel=1e-3)
+
+
+@pytest.mark.parametrize("dwell", [0.0, 0.05])
+def test_close_time_labels_do_not_touch(bank, dwell):
+    variant = variant_of(bank, "flywheels.torque_time", t1=0.1, rise=0.1, dwell=dwell, fall=0.1, idle=2.0)
+    ticks = [t for t in root(torque_time(variant)).iter(f"{SVG}text") if t.get("class") == "tick"]
+    boxes = [(float(t.get("y")), text_box((float(t.get("x")), 0), t.text, "middle", 12)) for t in ticks]
+    for i, (ya, a) in enumerate(boxes):
+        for yb, b in boxes[i + 1:]:
+            assert ya != yb or a[2] <= b[0] or b[2] <= a[0], (a, b)
+    assert len(ticks) == (6 if dwell else 5)
+
+
+def test_figures_are_deterministic(bank):
+    for template_id in ("flywheels.speed_fluctuation", "flywheels.flywheel_rim", "flywheels.torque_time"):
+        template = bank.get(template_id)
+        assert figure_svg(make_variant(template, 11)) == figure_svg(make_variant(template, 11))
