@@ -80,7 +80,7 @@ def test_close_time_labels_do_not_touch(bank, dwell):
     boxes = [(float(t.get("y")), text_box((float(t.get("x")), 0), t.text, "middle", 12)) for t in ticks]
     for i, (ya, a) in enumerate(boxes):
         for yb, b in boxes[i + 1:]:
-            assert ya != yb or a[2] <= b[0] or b[2] <= a[0], (a, b)
+            assert ya != yb or a.x1 <= b.x0 or b.x1 <= a.x0, (a, b)
     assert len(ticks) == (6 if dwell else 5)
 
 

@@ -136,9 +136,9 @@ def _time_labels(drawing: Drawing, marks: list[tuple[float, str]]) -> float:
     rows: list[float] = []
     for x, text in marks:
         box = text_box((x, 0), text, "middle", TICK)
-        row = next((i for i, right in enumerate(rows) if box[0] > right + 3), len(rows))
+        row = next((i for i, right in enumerate(rows) if box.x0 > right + 3), len(rows))
         if row == len(rows):
             rows.append(-math.inf)
         drawing.text((x, 20 + 14 * row), text, size=TICK, cls="tick")
-        rows[row] = box[2]
+        rows[row] = box.x1
     return 20 + 14 * (len(rows) - 1)
