@@ -78,6 +78,17 @@ def test_integer_and_word_values():
     assert trend.chain(TYPST)[-1] == '"increase"'
 
 
+def test_a_value_that_writes_itself_as_latex_is_shown_as_math():
+    class Formula:
+        def latex(self):
+            return r"\frac{1}{2\pi}\sqrt{\frac{K}{M}}"
+
+    latex = Formula().latex()
+    (line,) = solution(fake_variant([Step("f_expr", "f_n", "", Formula(), "")])).lines
+    assert line.chain(MARKDOWN) == ["f_n", latex]
+    assert line.chain(TYPST)[-1] == TYPST.math(latex) and line.chain(PLAIN)[-1] == PLAIN.math(latex)
+
+
 def test_a_formula_naming_nothing_is_an_error():
     variant = fake_variant([Step("y", "y", r"2\,@ghost", 1.0, "")])
     with pytest.raises(Exception, match="@ghost"):

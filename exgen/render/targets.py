@@ -38,6 +38,12 @@ def _is_number(value) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
+def _latex_of(value) -> str | None:
+    """The LaTeX of a value that is not a number but writes itself as math (a formula answer)."""
+    latex = getattr(value, "latex", None)
+    return latex() if callable(latex) else None
+
+
 class Markdown:
     """GitHub/Pandoc Markdown: math stays LaTeX between dollars."""
 
@@ -51,7 +57,7 @@ class Markdown:
 
     def number(self, value, sig: int = SIG) -> str:
         if not _is_number(value):
-            return r"\text{" + str(value) + "}"
+            return self.math(_latex_of(value)) if _latex_of(value) else r"\text{" + str(value) + "}"
         mantissa, exponent = number_parts(value, sig)
         return f"{mantissa} \\times 10^{{{exponent}}}" if exponent else mantissa
 
@@ -84,6 +90,8 @@ class Typst:
 
     def number(self, value, sig: int = SIG) -> str:
         if not _is_number(value):
+            if _latex_of(value):  # a formula answer
+                return self.math(_latex_of(value))
             return '"' + str(value).replace("\\", "\\\\").replace('"', '\\"') + '"'
         mantissa, exponent = number_parts(value, sig)
         return f"{mantissa} times 10^({exponent})" if exponent else mantissa
@@ -115,7 +123,7 @@ class Plain:
 
     def number(self, value, sig: int = SIG) -> str:
         if not _is_number(value):
-            return str(value)
+            return self.math(_latex_of(value)) if _latex_of(value) else str(value)
         mantissa, exponent = number_parts(value, sig)
         return f"{mantissa}×10{exponent.translate(_SUPERSCRIPT)}" if exponent else mantissa
 
