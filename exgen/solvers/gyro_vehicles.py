@@ -11,7 +11,8 @@ from __future__ import annotations
 import math
 
 from ..mechanics import gyroscopes as gy
-from .gyroscopes import APART, KMH, directions, record, turn_note, word
+from .gyroscopes import KMH, directions, turn_note, word
+from .slips import APART, record
 
 RAIL_APART = 0.015
 

@@ -10,9 +10,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import gyroscopes as gy
-
-#: Keep a known slip this far from the right answer (parts are graded at 1 %).
-APART = 0.03
+from .slips import APART
 KMH = 1 / 3.6
 
 #: How a direction in the vehicle's axes (x forward, y left, z up) is said on a road vehicle and on a ship.
@@ -24,13 +22,6 @@ WORDS = {
     "aircraft": {(1, 0, 0): "towards the nose", (-1, 0, 0): "towards the tail", (0, 1, 0): "to the left wing",
                  (0, -1, 0): "to the right wing", (0, 0, 1): "up", (0, 0, -1): "down"},
 }
-
-
-def record(d, step: str, mistake: str, value: float, apart: float = APART) -> None:
-    """Record a known slip only where it changes the step's value visibly (beyond `apart`)."""
-    right = d.value_of(step)
-    if math.isfinite(value) and abs(value - right) > apart * abs(right):
-        d.mistake(step, mistake, value)
 
 
 def word(vector, frame: str) -> str:
