@@ -5,7 +5,6 @@ the line, so an author fixes a bank in one pass (mkdocs-style) rather than one e
 """
 from __future__ import annotations
 
-import hashlib
 import importlib
 import os
 from dataclasses import dataclass
@@ -20,6 +19,7 @@ from . import expr
 from .answertypes import answer_type, names as answer_type_names
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .template import MistakeSpec, ParamSpec, PartSpec, Template
+from .versions import data_digest
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
@@ -91,7 +91,7 @@ def load_template(path: Path) -> Template:
         line = getattr(getattr(exc, "problem_mark", None), "line", None)
         raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
     reader = _Reader(path, root)
-    template = reader.template(data, hashlib.sha256(raw).hexdigest())
+    template = reader.template(data, data_digest(data))
     if reader.errors:
         raise BankError(reader.errors)
     return template
@@ -149,7 +149,7 @@ class _Reader:
             if key not in allowed:
                 self.error(keypath + (key,), f"unknown key; expected one of {', '.join(sorted(allowed))}")
 
-    def template(self, data, version: str) -> Template | None:
+    def template(self, data, digest: str) -> Template | None:
         if not isinstance(data, dict):
             self.error((), "a template file must be a mapping of keys (id, title, params, parts, ...)")
             return None
@@ -174,7 +174,7 @@ class _Reader:
             section=str(data.get("section", "")), params=params, require=require, solver=solver or "",
             statement=statement, parts=parts, figure=figure, key_figures=key_figures,
             source=str(data.get("source", "")),
-            topic=str(data.get("topic", "")), path=self.path, version=version,
+            topic=str(data.get("topic", "")), path=self.path, digest=digest,
         )
 
     def params(self, data) -> tuple[ParamSpec, ...]:

@@ -49,17 +49,19 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: {message} (see `{self.prog} --help`)\n")
 
 
-def _secret(args, assignment, create: bool):
+def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
+    """The course secret and where it came from: --secret-file, else $EXGEN_SECRET, else `default`."""
     from .seeds import ENV_VAR, load_secret
 
     explicit = bool(args.secret_file)
-    path = Path(args.secret_file) if explicit else assignment.secret_file
+    path = Path(args.secret_file) if explicit else default
     secret, source = load_secret(path, create=create, explicit=explicit)
     if explicit and os.environ.get(ENV_VAR):
         print(f"Using the secret file {path}; ${ENV_VAR} is set but --secret-file wins.", file=sys.stderr)
     if source.endswith("(new)"):
         print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
-    return secret
+        source = source[: -len(" (new)")]
+    return secret, source
 
 
 def _assignment_and_roster(args):
@@ -139,9 +141,10 @@ def cmd_generate(args) -> int:
     if roster_path is None:
         raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
     students = load_roster(roster_path)
-    secret = _secret(args, assignment, create=True)
+    secret, source = _secret(args, assignment.secret_file, create=True)
+    recorded = source if source.startswith("$") else str(Path(source).resolve())
     issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
-                      jobs=args.jobs or default_jobs(), progress=_progress)
+                      jobs=args.jobs or default_jobs(), progress=_progress, secret_source=recorded)
     kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
     print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; keys in {issued.out / 'keys'}")
     print(f"manifest: {issued.manifest}")
@@ -149,18 +152,27 @@ def cmd_generate(args) -> int:
 
 
 def cmd_grade(args) -> int:
-    from graders.grade import grade_batch
+    from graders.grade import grade_issued
     from graders.report import write_results
 
     from .assignment import load_roster
+    from .manifest import read_manifest
+    from .outdir import check_target
 
-    bank, assignment, roster_path = _assignment_and_roster(args)
-    roster = load_roster(roster_path) if roster_path else None
-    secret = _secret(args, assignment, create=False)
+    manifest = read_manifest(Path(args.issued))
     submissions = Path(args.submissions)
     if not submissions.is_dir():
-        raise ExgenError(f"{submissions}: not a directory of answer files")
-    batch = grade_batch(assignment, bank, secret, submissions, roster=roster, progress=_progress)
+        raise ExgenError(f"{submissions}: not a folder of answer files")
+    check_target(Path(args.out), "grade")  # before any work: a folder that cannot be replaced stops here
+    bank = _bank(args)
+    recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \
+        else None
+    secret, source = _secret(args, recorded, create=False)
+    roster = load_roster(Path(args.roster)) if args.roster else None
+    batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
+                         progress=_progress)
+    for warning in batch.warnings:
+        print(f"WARNING: {warning}", file=sys.stderr)
     paths = write_results(batch, Path(args.out))
     print(batch.summary())
     for name, path in paths.items():
@@ -218,12 +230,16 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--jobs", type=_count(1), help="processes making PDFs (default: one per core, up to 8)")
     p.set_defaults(func=cmd_generate)
 
-    p = sub.add_parser("grade", help="grade a folder of returned answer files")
-    p.add_argument("assignment", help="the assignment file the sheets were generated from")
-    p.add_argument("submissions", help="folder of answer files (YAML, JSON or CSV)")
-    p.add_argument("--out", required=True, help="output folder for the gradebook and feedback")
-    p.add_argument("--roster", help="class list CSV: students without a file get 0")
-    p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
+    p = sub.add_parser("grade", help="grade a folder of returned answer files against what was issued")
+    p.add_argument("issued", help="the folder `exgen generate` wrote (its --out), or its manifest.json")
+    p.add_argument("submissions", help="folder of answer files (YAML, JSON or CSV), one per student, named or "
+                                       "foldered by student id as a learning system downloads them")
+    p.add_argument("--out", required=True, help="output folder for the gradebook, feedback and report")
+    p.add_argument("--secret-file", help="course secret file (default: $EXGEN_SECRET, else the file the sheets "
+                                         "were generated with)")
+    p.add_argument("--roster", help="grade only these students (a class list CSV; all must have been issued sheets)")
+    p.add_argument("--force", action="store_true",
+                   help="grade even if the secret or a template differs from what was issued (warned in the report)")
     p.set_defaults(func=cmd_grade)
 
     p = sub.add_parser("validate", help="draw many variants of every template and check them")

@@ -1,8 +1,9 @@
 """Issue an assignment: a sheet, an answer form and a key per student, and a manifest.
 
-Every sheet is drawn before anything is written, so a template that cannot be drawn stops
-the run with nothing half-written. Student files and keys go to separate folders so the
-`students/` folder can be handed out as it is.
+Every sheet is drawn before anything is written, and everything is written into a folder that
+replaces the output folder only when complete, so an error or an interruption leaves the previous
+output whole and no stale files (another roster's students, an old PDF) survive a rerun. Student
+files and keys go to separate folders so the `students/` folder can be handed out as it is.
 
     OUT/students/<id>/sheet.md, sheet.pdf, answers.yaml, q1.svg ...
     OUT/keys/<id>/key.md, key.pdf, q1.svg ...
@@ -19,8 +20,11 @@ from typing import Callable, Iterable
 
 from .assignment import Assignment, Sheet, Student, build_sheet
 from .bank import Bank
-from .manifest import build_manifest, write_manifest
+from .manifest import MANIFEST, build_manifest, write_manifest
+from .outdir import check_target, replacing
 from .render.answer_form import answer_form
+
+KIND = "generate"  # the marker an issued folder carries (exgen.outdir)
 
 Progress = Callable[[Iterable, int, str], Iterable]
 
@@ -87,19 +91,23 @@ def default_jobs() -> int:
 
 
 def generate(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes, out: Path,
-             *, pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress) -> Issued:
-    """Draw every sheet, then write them; with jobs > 1 the PDFs are made in parallel processes."""
+             *, pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress,
+             secret_source: str = "") -> Issued:
+    """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
+    (exgen.outdir); with jobs > 1 the PDFs are made in parallel processes."""
+    out = Path(out)
+    check_target(out, KIND)  # before the slow part: a folder that cannot be replaced stops the run now
     sheets = draw_sheets(assignment, students, bank, secret, progress)
-    out.mkdir(parents=True, exist_ok=True)
-    if jobs > 1 and len(sheets) > 1:
-        work = [(assignment, s.student, bank, secret, out, pdf) for s in sheets]
-        # spawn, not fork: a forked child can inherit typst's threads' locks held, and hang
-        with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-            for _ in progress(pool.map(_write_in_worker, work, chunksize=4), len(work), "writing"):
-                pass
-    else:
-        for sheet in progress(sheets, len(sheets), "writing"):
-            write_student(sheet, out, pdf)
-    manifest_path = out / "manifest.json"
-    write_manifest(build_manifest(assignment, sheets, bank, secret), manifest_path)
-    return Issued(out, tuple(sheets), manifest_path)
+    manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
+    with replacing(out, KIND) as folder:
+        if jobs > 1 and len(sheets) > 1:
+            work = [(assignment, s.student, bank, secret, folder, pdf) for s in sheets]
+            # spawn, not fork: a forked child can inherit typst's threads' locks held, and hang
+            with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
+                for _ in progress(pool.map(_write_in_worker, work, chunksize=4), len(work), "writing"):
+                    pass
+        else:
+            for sheet in progress(sheets, len(sheets), "writing"):
+                write_student(sheet, folder, pdf)
+        write_manifest(manifest, folder / MANIFEST)
+    return Issued(out, tuple(sheets), out / MANIFEST)

@@ -104,7 +104,7 @@ class Template:
     source: str = ""
     topic: str = ""
     path: Path | None = None
-    version: str = ""  # sha256 of the file's bytes: what was issued can be checked later
+    digest: str = ""  # sha256 of the parsed data (exgen.versions.data_digest); its full version: template_version
 
     def param(self, name: str) -> ParamSpec:
         return next(p for p in self.params if p.name == name)

@@ -1,78 +1,146 @@
-"""Find the answer files in a directory and decide whose each one is.
+"""Find every file in a submissions folder and decide whose each answer file is, from where it sits.
 
-Files may lie in the directory itself or one folder down (as learning systems download them:
-"s001/answers.yaml"). A file names its student (`student:`); if it does not, its file name or
-its folder does ("s001.yaml", "s001/answers.yaml", or with a roster "s001_answers.yaml"). Files that cannot be read, belong to no one on the roster, or are
-one of several from one student are reported, never fatal: the batch goes on.
+Identity comes from the file's place, as learning systems lay bulk downloads out: a folder or file
+name holding the student's id ("A21001/answers.yaml", "A21001.yaml", "hw1_A21001_attempt2.csv"), or
+a folder named by the student's full name ("Daniel Lim_12345_assignsubmission_file_/..."). What a file
+says inside (`student:`, `code:`, `assignment:`) is only checked against that: a file in one student's
+place that names another student, carries another sheet's code or answers another assignment is a
+problem file, never graded for anyone. Every file found is either graded or listed with why not.
 """
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 
 from exgen.assignment import Student
 from exgen.errors import SubmissionError
+from exgen.outdir import MARKER
 
 from .answers import Submission, read_submission
-from .formats import SUFFIXES
+from .echo import shown
+from .formats import SUFFIXES, file_kind
 from .results import FileProblem
 
 #: What a student id may look like (it names the feedback file): as exgen.assignment requires.
 SAFE_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
+#: How deep below the submissions folder files are looked for, and how many at most.
+MAX_DEPTH = 4
+MAX_FILES = 5000
 
 #: Files grading itself writes, never read back as answers.
 OUTPUT_FILES = {"gradebook.csv"}
 
-NOT_ON_ROSTER = "student {student!r} is not on the roster; the file was skipped"
-WHOSE_FILE = "cannot tell whose file this is: it names no valid student id and neither does its file name"
-BAD_ID = "the file names the student {given!r}, which is not a valid id; used {student!r} from the file name"
+HIDDEN = "a hidden file; skipped"
+LINK = "a symbolic link; not followed"
+IN_OUTPUT = "inside a folder exgen wrote ({folder}); skipped"
+OUR_OUTPUT = "a gradebook written by exgen grade, not an answer file; skipped"
+NOT_ANSWERS = "not an answer file ({kind}); answer files are {suffixes}"
+TOO_DEEP = "more than {depth} folders down; skipped (put answer files at most {depth} folders down)"
+TOO_MANY = "holds more than {limit} files; the rest were not looked at"
+WHOSE_FILE = ("cannot tell whose file this is: its name and folders name no student {of} (name it <id>.yaml, "
+              "or put it in a folder named by the id)")
+SEVERAL = "its name or folders name several students ({students})"
+OTHER_STUDENT = "sits in {owner}'s place (its name or folder) but says `student: {given}` inside (copied, or a mix-up?)"
+OTHER_CODE = "carries the sheet code {given}, but {owner}'s sheet has {code}{whose} (copied, or a mix-up?)"
+OTHER_ASSIGNMENT = "is for the assignment {given!r}, not {expected!r}"
+NO_CODE = "The answer file carries no sheet code; it was graded against your own sheet."
 DUPLICATE = "{student} handed in {count} files; graded the newest, {newest}"
 OLDER_FILE = "an older file from {student}; {newest} was graded instead"
 
 
 @dataclass
 class Entry:
-    """One student's hand-in: the file graded (None: no submission) and what went wrong reading it."""
+    """One student's hand-in: the file graded (None: no submission), why it could not be read, or why
+    it was refused (it names another student, another sheet or another assignment)."""
 
     student: Student
     path: Path | None = None
     submission: Submission | None = None
     error: str = ""
+    refused: str = ""
     notes: list[str] = field(default_factory=list)
 
 
-def answer_files(directory: Path) -> list[Path]:
-    """Answer files in `directory` and its immediate folders; hidden ones and our own outputs skipped."""
+def answer_files(directory: Path) -> tuple[list[Path], list[FileProblem]]:
+    """Files that may be answers, and every other file found with why it is skipped."""
     directory = Path(directory)
-    found = []
-    for path in sorted(directory.glob("*")) + sorted(directory.glob("*/*")):
-        hidden = any(p.startswith(".") for p in path.relative_to(directory).parts)
-        if path.suffix.lower() in SUFFIXES and path.name not in OUTPUT_FILES and not hidden and path.is_file():
-            found.append(path)
-    return found
+    found, skipped, seen = [], [], 0
+    for folder, subfolders, names in os.walk(directory):
+        here = Path(folder)
+        depth = len(here.relative_to(directory).parts)
+        if (here / MARKER).is_file() and here != directory:
+            skipped.append(FileProblem(here, IN_OUTPUT.format(folder=here.name)))
+            subfolders[:] = []
+            continue
+        for sub in sorted(subfolders):
+            if (here / sub).is_symlink():
+                skipped.append(FileProblem(here / sub, LINK))
+        subfolders[:] = sorted(s for s in subfolders if not (here / s).is_symlink())
+        if depth > MAX_DEPTH:
+            skipped += [FileProblem(here / n, TOO_DEEP.format(depth=MAX_DEPTH)) for n in sorted(names)]
+            subfolders[:] = []
+            continue
+        for name in sorted(names):
+            seen += 1
+            if seen > MAX_FILES:
+                break
+            path = here / name
+            reason = _skipped(path, directory)
+            if reason:
+                skipped.append(FileProblem(path, reason))
+            else:
+                found.append(path)
+        if seen > MAX_FILES:
+            break
+    if seen > MAX_FILES:
+        skipped.append(FileProblem(directory, TOO_MANY.format(limit=MAX_FILES)))
+    return found, skipped
 
 
-def collect(directory: Path, roster: list[Student] | None = None) -> tuple[list[Entry], list[FileProblem]]:
-    """Every student to grade (roster order, else by id) and every problem file."""
+def _skipped(path: Path, directory: Path) -> str:
+    """Why a file is not read as answers, or "" if it is."""
+    relative = path.relative_to(directory)
+    if any(part.startswith(".") or part == "__MACOSX" for part in relative.parts):
+        return HIDDEN
+    if path.is_symlink():
+        return LINK
+    if path.name.lower() in OUTPUT_FILES:
+        return OUR_OUTPUT
+    if file_kind(path) is None:
+        kind = path.suffix.lower() or "no extension"
+        return NOT_ANSWERS.format(kind=shown(kind, 20), suffixes=", ".join(sorted(SUFFIXES)))
+    return ""
+
+
+def collect(directory: Path, roster: list[Student] | None = None, *, assignment: str = "",
+            codes: dict[str, str] | None = None) -> tuple[list[Entry], list[FileProblem]]:
+    """Every student to grade (roster order, else by id) and every file not graded, with why.
+    `codes` are the sheet codes issued (by student id); `assignment` the id the files must answer."""
+    directory = Path(directory)
     known = {s.id: s for s in roster} if roster is not None else None
+    files, problems = answer_files(directory)
     found: dict[str, list[Entry]] = {}
-    problems: list[FileProblem] = []
-    for path in answer_files(directory):
+    for path in files:
+        owner, why_not = whose(path.relative_to(directory), known)
         try:
             submission, error = read_submission(path), ""
         except SubmissionError as exc:
             submission, error = None, (f"line {exc.line}: {exc.detail}" if exc.line else exc.detail)
-        student_id, note = _whose(path, submission, known, Path(directory))
-        if not student_id or (known is not None and student_id not in known):
-            unmatched = NOT_ON_ROSTER.format(student=student_id) if student_id else WHOSE_FILE
-            problems.append(FileProblem(path, f"{error} ({unmatched})" if error else unmatched))
+        if not owner:  # say what the file holds, to help whoever sorts it out
+            inside = (f" (it says `student: {shown(submission.student, 40)}` inside)" if submission and
+                      submission.student else f" (and it cannot be read: {error})" if error else "")
+            problems.append(FileProblem(path, why_not + inside))
             continue
-        if error:
-            problems.append(FileProblem(path, error, student_id))
-        student = known[student_id] if known is not None else Student(student_id)
-        found.setdefault(student_id, []).append(Entry(student, path, submission, error, [note] if note else []))
-    entries = [_newest(files, problems) for files in found.values()]
+        refused = _refusal(owner, submission, assignment, codes) if submission is not None else ""
+        if error or refused:
+            problems.append(FileProblem(path, error or refused, owner))
+        student = known[owner] if known is not None else Student(owner)
+        notes = [NO_CODE] if codes and submission is not None and not submission.code and not refused else []
+        found.setdefault(owner, []).append(Entry(student, path, submission, error, refused, notes))
+    entries = [_chosen(files, problems) for files in found.values()]
     if known is not None:
         entries += [Entry(s) for sid, s in known.items() if sid not in found]
         order = {sid: i for i, sid in enumerate(known)}
@@ -82,39 +150,89 @@ def collect(directory: Path, roster: list[Student] | None = None) -> tuple[list[
     return entries, problems
 
 
-def _whose(path: Path, submission: Submission | None, known: dict | None, directory: Path) -> tuple[str, str]:
-    """The student id for a file, and a note if the file's own id had to be passed over."""
-    given = submission.student if submission is not None else ""
-    if given and SAFE_ID.fullmatch(given):
-        return given, ""
-    names = [path.parent.name, path.stem] if path.parent != directory else [path.stem]
-    from_name = next((sid for sid in (_id_from_name(n, known) for n in names) if sid), "")
-    if given and from_name:
-        return from_name, BAD_ID.format(given=given[:80], student=from_name)
-    return from_name, ""
+def whose(relative: Path, known: dict[str, Student] | None) -> tuple[str, str]:
+    """The student a file belongs to by where it sits (its folders, nearest first, then its name), or ""
+    and why not."""
+    names = [*reversed(relative.parts[:-1]), _stem(relative.name)]
+    if known is None:  # no roster: the first folder, else the file name, if it is a valid id
+        candidates = [relative.parts[0]] if len(relative.parts) > 1 else [_stem(relative.name)]
+        owner = next((c for c in candidates if SAFE_ID.fullmatch(c)), "")
+        return owner, "" if owner else WHOSE_FILE.format(of="by a valid id")
+    for name in names:
+        matches = _ids_in(name, known) or _names_in(name, known)
+        if len(matches) == 1:
+            return matches[0], ""
+        if len(matches) > 1:
+            return "", SEVERAL.format(students=", ".join(sorted(matches)[:5]))
+    return "", WHOSE_FILE.format(of="on the roster")
 
 
-def _id_from_name(stem: str, known: dict | None) -> str:
-    """'s001' -> 's001'; with a roster also 's001_answers' -> 's001' (the longest id the name starts with)."""
-    if known is not None:
-        if stem in known:
-            return stem
-        prefixes = [sid for sid in known if stem.startswith(sid) and not stem[len(sid)].isalnum()]
-        if prefixes:
-            return max(prefixes, key=len)
-    return stem if SAFE_ID.fullmatch(stem) else ""
+def _stem(name: str) -> str:
+    """The name without its answer-file suffixes ("A21001.yaml.txt" -> "A21001")."""
+    path = Path(name)
+    while path.suffix.lower() in (*SUFFIXES, ".txt") and path.stem:
+        path = Path(path.stem)
+    return path.name
 
 
-def _newest(entries: list[Entry], problems: list[FileProblem]) -> Entry:
+def _ids_in(name: str, known: dict[str, Student]) -> list[str]:
+    """Roster ids that appear in `name` as a whole token (not inside a longer run of letters and digits)."""
+    if name in known:
+        return [name]
+    by_lower = {sid.lower(): sid for sid in known}
+    return sorted({by_lower[m.group(1).lower()] for m in _id_pattern(tuple(by_lower)).finditer(name)})
+
+
+@lru_cache(maxsize=4)
+def _id_pattern(ids: tuple[str, ...]) -> re.Pattern:
+    """One pattern for every id of a roster, longest first, each between non-alphanumerics."""
+    alternatives = "|".join(re.escape(i) for i in sorted(ids, key=len, reverse=True))
+    return re.compile(rf"(?<![A-Za-z0-9])({alternatives})(?![A-Za-z0-9])", re.IGNORECASE)
+
+
+def _names_in(name: str, known: dict[str, Student]) -> list[str]:
+    """Students whose full name starts the folder name, as "Full Name_12345_assignsubmission_file_"."""
+    lowered = " ".join(name.lower().replace("_", " _ ").split())
+    out = []
+    for sid, student in known.items():
+        full = " ".join(student.name.lower().split())
+        if full and (lowered == full or lowered.startswith(full + " _")):
+            out.append(sid)
+    return out
+
+
+def _refusal(owner: str, submission: Submission, assignment: str, codes: dict[str, str] | None) -> str:
+    """Why a readable file in `owner`'s place is not graded, or ""."""
+    given = submission.student.strip()
+    if given and given.casefold() != owner.casefold():
+        return OTHER_STUDENT.format(owner=owner, given=shown(given, 40))
+    if assignment and submission.assignment and submission.assignment.strip().casefold() != assignment.casefold():
+        return OTHER_ASSIGNMENT.format(given=shown(submission.assignment, 40), expected=assignment)
+    issued = (codes or {}).get(owner, "")
+    if issued and submission.code and _code(submission.code) != _code(issued):
+        whose_code = next((sid for sid, c in (codes or {}).items() if _code(c) == _code(submission.code)), "")
+        return OTHER_CODE.format(given=shown(submission.code, 20), owner=owner, code=issued,
+                                 whose=f" ({whose_code}'s sheet has {shown(submission.code, 20)})" if whose_code else "")
+    return ""
+
+
+def _code(text: str) -> str:
+    """'7f3a 19c2', '7F3A-19C2' -> '7F3A19C2': how a code may be typed."""
+    return re.sub(r"[^0-9A-Za-z]", "", text).upper()
+
+
+def _chosen(entries: list[Entry], problems: list[FileProblem]) -> Entry:
+    """The file graded for one student: the newest readable one not refused (else the newest)."""
     if len(entries) == 1:
         return entries[0]
-    entries = sorted(entries, key=lambda e: (_mtime(e.path), e.path.name))
-    newest = entries[-1]
-    sid = newest.student.id
-    newest.notes.append(DUPLICATE.format(student=sid, count=len(entries), newest=newest.path.name))
-    for older in entries[:-1]:
-        problems.append(FileProblem(older.path, OLDER_FILE.format(student=sid, newest=newest.path.name), sid))
-    return newest
+    ordered = sorted(entries, key=lambda e: (not (e.refused or e.error), _mtime(e.path), e.path.name))
+    chosen = ordered[-1]
+    sid = chosen.student.id
+    others = [e for e in ordered[:-1] if not e.refused and not e.error]
+    if others:
+        chosen.notes.append(DUPLICATE.format(student=sid, count=len(others) + 1, newest=chosen.path.name))
+        problems += [FileProblem(e.path, OLDER_FILE.format(student=sid, newest=chosen.path.name), sid) for e in others]
+    return chosen
 
 
 def _mtime(path: Path) -> float:

@@ -1,7 +1,9 @@
-"""Grade answer files against the sheets they answer: one sheet, or a directory of them.
+"""Grade answer files against the sheets they answer: one sheet, a directory, or what was issued.
 
-Each student's sheet is rebuilt from (assignment, student, secret), so a student is always
-graded against their own numbers; the code in the answer file is only checked, never trusted.
+Each student's sheet is rebuilt from (assignment, student, secret), so a student is always graded
+against their own numbers; what an answer file says of itself is only checked, never trusted.
+`grade_issued` first checks that the secret and every template are still what the manifest records,
+and stops before any mark if not (unless forced, and then the batch carries the warning).
 """
 from __future__ import annotations
 
@@ -13,14 +15,15 @@ from typing import Callable, Iterable, Mapping
 from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet, load_roster
 from exgen.bank import Bank
 from exgen.errors import ExgenError
+from exgen.manifest import Manifest, ManifestError, issue_mismatches
 from exgen.variant import Variant
 
 from .answers import Submission
 from .echo import shown
 from .collect import Entry, collect
 from .marking import QuestionMarker
-from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, UNREADABLE_FILE, BatchResult, Column, FileProblem,
-                      QuestionResult, SheetResult)
+from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, PROBLEM_FILE, UNREADABLE_FILE, BatchResult, Column,
+                      FileProblem, QuestionResult, SheetResult)
 
 CODE_MISMATCH = ("This answer file carries the sheet code {given}, but your sheet's code is {code}: it may "
                  "belong to another sheet. It was graded against your own sheet.")
@@ -31,6 +34,11 @@ LISTED = 5  # names of unknown questions or parts quoted in one note; the rest a
 NO_FILE = "No answer file was handed in."
 UNREADABLE = "Your answer file could not be read: {reason}"
 NO_SHEET = "The sheet could not be rebuilt for grading: {reason}"
+REFUSED = "Your answer file {name} was not graded: it {reason}. Ask your instructor."
+MISMATCH = ("not graded, nothing written: grading now would not give the marks of the sheets as issued: {problems}. "
+            "Grade with the secret and templates they were issued with, or add --force to grade anyway")
+FORCED = "Graded with --force although {problem}"
+NOT_ISSUED = "{student} was not issued a sheet ({manifest})"
 
 Progress = Callable[[Iterable, int], Iterable]
 
@@ -64,19 +72,38 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
                        submission.path, mismatch)
 
 
+def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir: Path, *, secret_source: str = "",
+                 force: bool = False, roster: list[Student] | None = None,
+                 progress: Progress | None = None) -> BatchResult:
+    """Grade the answers to what a manifest records: its questions, its roster (or the part of it given),
+    its sheet codes. A different secret, a changed template or solver, or a student never issued a sheet
+    stops the run with ManifestError before any mark, unless `force`d (then the batch carries warnings)."""
+    problems = issue_mismatches(manifest, bank, secret, secret_source or "the secret given")
+    issued = {s.id: s for s in manifest.students}
+    students = list(manifest.students) if roster is None else [issued.get(s.id, s) for s in roster]
+    problems += [NOT_ISSUED.format(student=s.id, manifest=manifest.path.name) for s in students if s.id not in issued]
+    if problems and not force:
+        raise ManifestError(manifest.path, MISMATCH.format(problems="; ".join(problems)))
+    batch = grade_batch(manifest.assignment, bank, secret, submissions_dir, roster=students, progress=progress,
+                        codes=manifest.codes)
+    return dataclasses.replace(batch, warnings=tuple(FORCED.format(problem=p) for p in problems))
+
+
 def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_dir: Path,
-                roster: list[Student] | Path | None = None, progress: Progress | None = None) -> BatchResult:
-    """Grade every answer file in a directory; one broken file never stops the rest."""
+                roster: list[Student] | Path | None = None, progress: Progress | None = None,
+                codes: dict[str, str] | None = None) -> BatchResult:
+    """Grade every answer file in a directory; one broken file never stops the rest. `codes` are the
+    sheet codes issued, by student (from the manifest); without them each sheet's own code is used."""
     if isinstance(roster, (str, Path)):
         roster = load_roster(Path(roster))
     columns = tuple(Column(i, spec.slot, spec.template, spec.points or bank.get(spec.template).points)
                     for i, spec in enumerate(assignment.questions, start=1))
     max_points = sum(c.max_points for c in columns)
-    entries, problems = collect(Path(submissions_dir), roster)
+    entries, problems = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes)
     loop = _with_progress(progress, entries)
     sheets = []
     for entry in loop:
-        sheet_result = _grade_entry(entry, assignment, bank, secret, max_points)
+        sheet_result = _grade_entry(entry, assignment, bank, secret, max_points, (codes or {}).get(entry.student.id))
         if sheet_result.status == NOT_GRADED:
             problems.append(FileProblem(entry.path or Path(submissions_dir), sheet_result.warnings[-1],
                                         entry.student.id))
@@ -102,18 +129,24 @@ def _with_progress(progress: Progress | None, entries: list) -> Iterable:
     return progress(entries, len(entries), "grading") if wanted >= 3 else progress(entries, len(entries))
 
 
-def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float) -> SheetResult:
+def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float,
+                 code: str | None = None) -> SheetResult:
     notes = tuple(entry.notes)
     if entry.path is None:
         return SheetResult(entry.student, NO_SUBMISSION, max_points, warnings=(NO_FILE,))
     if entry.submission is None:
         return SheetResult(entry.student, UNREADABLE_FILE, max_points,
                            warnings=notes + (UNREADABLE.format(reason=entry.error),), path=entry.path)
+    if entry.refused:
+        return SheetResult(entry.student, PROBLEM_FILE, max_points, code=code or "", path=entry.path,
+                           warnings=notes + (REFUSED.format(name=entry.path.name, reason=entry.refused),))
     try:
         sheet = build_sheet(assignment, entry.student, bank, secret)
     except ExgenError as exc:
         return SheetResult(entry.student, NOT_GRADED, max_points, warnings=notes + (NO_SHEET.format(reason=exc),),
                            path=entry.path)
+    if code:  # the code printed on the sheet as issued
+        sheet = dataclasses.replace(sheet, code=code)
     result = grade_sheet(sheet, entry.submission)
     return dataclasses.replace(result, warnings=notes + result.warnings)
 

@@ -1,7 +1,7 @@
 """Write a graded batch out: the gradebook CSV, one feedback page per student, and the instructor's report.
 
-Everything is gathered before anything is written; text a student typed is shortened and
-escaped wherever it lands (a Markdown page may end up as HTML in a learning system).
+Everything is gathered before anything is written, into a folder swapped in when complete; text a
+student typed is shortened and escaped wherever it lands (a Markdown page may end up as HTML in a learning system).
 """
 from __future__ import annotations
 
@@ -9,6 +9,8 @@ import csv
 import html
 from collections import Counter
 from pathlib import Path
+
+from exgen.outdir import check_target, replacing
 
 from .echo import shown
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
@@ -25,21 +27,23 @@ NOTES_SHOWN = 10
 COMMON_MISTAKES = 3
 _LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
+KIND = "grade"  # the marker a folder of grading results carries (exgen.outdir)
 
 
 def write_results(batch: BatchResult, out_dir: Path) -> dict[str, Path]:
-    """gradebook.csv, feedback/<student>.md and report.md under `out_dir`; returns their paths."""
+    """gradebook.csv, feedback/<student>.md and report.md under `out_dir`; returns their paths. The folder
+    is replaced whole when everything is written (exgen.outdir): never a new gradebook beside old feedback."""
     out_dir = Path(out_dir)
+    check_target(out_dir, KIND)
     feedback = {s.student.id: feedback_page(batch, s) for s in batch.sheets}
     report = report_page(batch)
-    (out_dir / "feedback").mkdir(parents=True, exist_ok=True)
-    paths = {"gradebook": out_dir / "gradebook.csv", "report": out_dir / "report.md",
-             "feedback": out_dir / "feedback"}
-    write_gradebook(batch, paths["gradebook"])
-    for student_id, page in feedback.items():
-        (paths["feedback"] / f"{student_id}.md").write_text(page, encoding="utf-8")
-    paths["report"].write_text(report, encoding="utf-8")
-    return paths
+    with replacing(out_dir, KIND) as folder:
+        (folder / "feedback").mkdir()
+        write_gradebook(batch, folder / "gradebook.csv")
+        for student_id, page in feedback.items():
+            (folder / "feedback" / f"{student_id}.md").write_text(page, encoding="utf-8")
+        (folder / "report.md").write_text(report, encoding="utf-8")
+    return {"gradebook": out_dir / "gradebook.csv", "report": out_dir / "report.md", "feedback": out_dir / "feedback"}
 
 
 # ---- gradebook ----------------------------------------------------------------------------------
@@ -124,8 +128,10 @@ def _sentence(message: str) -> str:
 
 def report_page(batch: BatchResult) -> str:
     counts = batch.by_status()
-    lines = [f"# Grading report: {_escape(batch.assignment.title)}", "",
-             f"Sheets: {len(batch.sheets)} ({', '.join(f'{n} {s}' for s, n in sorted(counts.items())) or 'none'})"]
+    lines = [f"# Grading report: {_escape(batch.assignment.title)}", ""]
+    for warning in batch.warnings:  # graded with --force: impossible to miss
+        lines += [f"> **WARNING:** {_escape(warning, 1000)}", ""]
+    lines += [f"Sheets: {len(batch.sheets)} ({', '.join(f'{n} {s}' for s, n in sorted(counts.items())) or 'none'})"]
     summary = batch.percent_summary()
     if summary:
         lines.append(f"Marks of graded sheets: mean {summary[0]:.1f} %, median {summary[1]:.1f} % "
@@ -137,7 +143,7 @@ def report_page(batch: BatchResult) -> str:
     warned = [s for s in batch.sheets if s.code_mismatch]
     if warned:
         lines += ["", "## Sheet code warnings", ""] + [f"- {s.student.id}" for s in warned]
-    lines += ["", "## Problem files", ""]
+    lines += ["", "## Files not graded", "", "Every file in the submissions folder is either graded or listed here.", ""]
     lines += [f"- `{_shown(_where(p.path, batch.submissions), 200)}`{' (' + p.student + ')' if p.student else ''}: "
               f"{_escape(p.reason)}" for p in batch.problems] or ["None."]
     return "\n".join(lines) + "\n"

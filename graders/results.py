@@ -20,6 +20,7 @@ GRADED = "graded"
 NO_SUBMISSION = "no submission"
 UNREADABLE_FILE = "unreadable file"
 NOT_GRADED = "not graded"  # the sheet itself could not be rebuilt (a bank or secret problem)
+PROBLEM_FILE = "problem file"  # a file in the student's place names another student, sheet or assignment
 
 
 @dataclass(frozen=True)
@@ -103,6 +104,7 @@ class BatchResult:
     sheets: tuple[SheetResult, ...]
     problems: tuple[FileProblem, ...] = field(default=())
     submissions: Path | None = None  # the directory the answer files came from
+    warnings: tuple[str, ...] = ()   # about the whole batch (graded with --force although ...)
 
     @property
     def max_points(self) -> float:
@@ -113,8 +115,9 @@ class BatchResult:
         counts = ", ".join(f"{n} {status}" for status, n in sorted(self.by_status().items())) or "no students"
         marks = self.percent_summary()
         mean = f"; mean {marks[0]:.1f} %, median {marks[1]:.1f} %" if marks else ""
-        problems = f"; {len(self.problems)} problem file(s)" if self.problems else ""
-        return f"{len(self.sheets)} student(s): {counts}{mean}{problems}"
+        problems = f"; {len(self.problems)} file(s) not graded" if self.problems else ""
+        forced = f" (graded with --force: {len(self.warnings)} warning(s) in the report)" if self.warnings else ""
+        return f"{len(self.sheets)} student(s): {counts}{mean}{problems}{forced}"
 
     def by_status(self) -> dict[str, int]:
         counts: dict[str, int] = {}

@@ -40,7 +40,7 @@ def problems(path: Path) -> list[str]:
 def test_good_template_loads(tmp_path):
     template = load_template(write(tmp_path, GOOD))
     assert template.id == "demo.good" and template.param("t").choices[0] == 8
-    assert len(template.version) == 64
+    assert len(template.digest) == 64
 
 
 @pytest.mark.parametrize("old, new, expected", [

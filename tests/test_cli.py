@@ -96,7 +96,7 @@ def test_generate_then_grade(tmp_path, capsys, monkeypatch):
     shutil.copy(tmp_path / "out" / "students" / "A21001" / "answers.yaml", submissions / "A21001.yaml")
     (submissions / "A21002.yaml").write_bytes(b"\x00\x01 not yaml")
     capsys.readouterr()
-    assert main(["grade", str(work / "tutorial1.yaml"), str(submissions), "--out", str(tmp_path / "graded")]) == 0
+    assert main(["grade", str(tmp_path / "out"), str(submissions), "--out", str(tmp_path / "graded")]) == 0
     out = capsys.readouterr().out
     assert "1 unreadable file" in out and "no submission" in out
     gradebook = (tmp_path / "graded" / "gradebook.csv").read_text()
@@ -107,9 +107,11 @@ def test_grade_without_the_secret_says_so(tmp_path, capsys, monkeypatch):
     monkeypatch.delenv("EXGEN_SECRET", raising=False)
     work = tmp_path / "course"
     shutil.copytree(EXAMPLES, work)
-    (work / "course.secret").unlink(missing_ok=True)
-    assert main(["grade", str(work / "tutorial1.yaml"), str(tmp_path), "--out", str(tmp_path / "g")]) == 1
-    assert "no course secret" in capsys.readouterr().err
+    assert main(["generate", str(work / "tutorial1.yaml"), "--out", str(tmp_path / "out"), "--no-pdf"]) == 0
+    (work / "course.secret").unlink()
+    assert main(["grade", str(tmp_path / "out"), str(tmp_path), "--out", str(tmp_path / "g")]) == 1
+    err = capsys.readouterr().err
+    assert "no course secret" in err and "course.secret does not exist" in err
 
 
 def test_validate_passes_on_the_bank(capsys):

@@ -7,6 +7,7 @@ import pytest
 from exgen.assignment import load_assignment, load_roster
 from exgen.generate import generate
 from exgen.seeds import derive_seed
+from exgen.versions import template_version
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 SECRET = b"a course secret used only by these tests"
@@ -55,7 +56,9 @@ def test_manifest_records_what_was_issued_but_no_secret_or_seed(issued, bank):
     text = (first / "manifest.json").read_text()
     manifest = json.loads(text)
     assert manifest["assignment"]["id"] == "bmcm2723-tut1"
-    assert manifest["templates"]["belts.flat_belt_power"] == bank.get("belts.flat_belt_power").version
+    recorded = manifest["templates"]["belts.flat_belt_power"]
+    assert recorded["version"] == template_version(bank.get("belts.flat_belt_power")).digest
+    assert "exgen/solvers/belts.py" in recorded["code"] and "exgen/solvers/belts.py" in manifest["files"]
     assert [s["id"] for s in manifest["students"]] == [s.id for s in students]
     assert manifest["students"][0]["questions"][0]["seed_input"] == f"bmcm2723-tut1/{students[0].id}/q1"
     assert SECRET.decode() not in text and SECRET.hex() not in text

@@ -9,7 +9,7 @@ from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.answer_form import answer_form
 from graders.grade import grade_batch
 from graders.report import write_results
-from graders.results import GRADED, NO_SUBMISSION, UNREADABLE_FILE
+from graders.results import GRADED, NO_SUBMISSION, PROBLEM_FILE, UNREADABLE_FILE
 
 SECRET = b"s" * 32
 ASSIGNMENT = Assignment("hw2", "Belts <b>&</b> friends", (
@@ -28,8 +28,9 @@ def key_form(bank, student, right=("q1", "q2")):
 
 @pytest.fixture
 def handed_in(bank, tmp_path):
-    """s000 all right (YAML form), s001 q1 only (JSON), s002 broken, s003 two files, s004 in a folder,
-    s005 and s900 nothing; plus a stranger and a bomb."""
+    """s000 all right (YAML form), s001 q1 only (JSON, named as a learning system names downloads), s002
+    broken, s003 two files, s004 in a folder, s005 and s900 nothing; plus a stranger, a bomb, a text file
+    and a hidden one."""
     folder = tmp_path / "in"
     folder.mkdir()
     sheet, data = key_form(bank, ROSTER[0])
@@ -39,7 +40,7 @@ def handed_in(bank, tmp_path):
             form = form.replace(f'  {slot}:', f'  {slot}:', 1)
     (folder / "s000.yaml").write_text(_filled(form, data["answers"]), encoding="utf-8")
     _, data = key_form(bank, ROSTER[1], right=("q1",))
-    (folder / "whatever.json").write_text(json.dumps(data), encoding="utf-8")
+    (folder / "hw2_s001_attempt_1.json").write_text(json.dumps(data), encoding="utf-8")
     (folder / "s002.yaml").write_text("answers: !!python/object/apply:os.system ['echo hi']\n", encoding="utf-8")
     _, data = key_form(bank, ROSTER[3])
     old = folder / "s003.json"
@@ -88,18 +89,21 @@ def test_batch_grades_everyone_and_reports_every_problem(bank, handed_in):
     assert by_id["s004"].question("q2").points == pytest.approx(6) and by_id["s004"].question("q1").points == 0
     assert by_id["s005"].status == NO_SUBMISSION and by_id["s005"].points == 0
     reasons = {p.path.name: p.reason for p in batch.problems}
-    assert set(reasons) == {"s002.yaml", "s003.json", "stranger.yaml", "bomb.yaml"}
-    assert "not on the roster" in reasons["stranger.yaml"] and "aliases" in reasons["bomb.yaml"]
+    assert set(reasons) == {"s002.yaml", "s003.json", "stranger.yaml", "bomb.yaml", "notes.txt", ".hidden.yaml"}
+    assert "cannot tell whose file" in reasons["stranger.yaml"] and "student: zz999" in reasons["stranger.yaml"]
+    assert "aliases" in reasons["bomb.yaml"] and "not an answer file (.txt)" in reasons["notes.txt"]
+    assert "hidden" in reasons[".hidden.yaml"]
     assert "s003_resubmitted.csv was graded" in reasons["s003.json"]
     assert batch.by_status() == {GRADED: 4, UNREADABLE_FILE: 1, NO_SUBMISSION: 2}
     assert "7 student(s)" in batch.summary()
 
 
-def test_without_a_roster_every_readable_file_is_a_student(bank, handed_in):
+def test_without_a_roster_a_file_name_or_first_folder_is_the_student(bank, handed_in):
     batch = grade_batch(ASSIGNMENT, bank, SECRET, handed_in)
     ids = [s.student.id for s in batch.sheets]
-    assert ids == sorted(ids) and "zz999" in ids and "s005" not in ids
-    assert {p.path.name for p in batch.problems} >= {"s002.yaml", "bomb.yaml"}
+    assert ids == sorted(ids) and {"s000", "s004", "stranger"} <= set(ids) and "s005" not in ids
+    assert "zz999" not in ids  # what a file says inside never decides whose it is
+    assert {p.path.name for p in batch.problems} >= {"s002.yaml", "bomb.yaml", "stranger.yaml"}
 
 
 def test_progress_wrapper_with_a_label_is_given_one(bank, handed_in):
@@ -149,8 +153,8 @@ def test_a_path_in_the_student_field_cannot_escape_the_feedback_folder(bank, tmp
     folder.mkdir()
     (folder / "s001.yaml").write_text("student: ../../evil\nanswers: {}\n", encoding="utf-8")
     batch = grade_batch(ASSIGNMENT, bank, SECRET, folder)
-    assert [s.student.id for s in batch.sheets] == ["s001"]
-    assert "not a valid id" in batch.sheets[0].warnings[0]
+    assert [(s.student.id, s.status) for s in batch.sheets] == [("s001", PROBLEM_FILE)]
+    assert "says `student: ../../evil` inside" in batch.sheets[0].warnings[0]
     write_results(batch, tmp_path / "out")
     assert not (tmp_path / "evil.md").exists()
 
