@@ -19,7 +19,7 @@ SVG_FAMILY = "'New Computer Modern', 'Latin Modern Roman', 'CMU Serif', serif"
 STYLES = ("regular", "bold", "italic", "bold-italic")
 #: The characters measured: printable ASCII, Greek, and the signs figures print.
 CHARACTERS = ("".join(chr(c) for c in range(0x20, 0x7F)) + "ΑΒΓΔΕΖΗΘΙΚΛΜΝΞΟΠΡΣΤΥΦΧΨΩ"
-              "αβγδεζηθικλμνξοπρστυφχψω°·×−–—±√→←")
+              "αβγδεζηθικλμνξοπρστυφχψω°·×−–—±√→←′″")
 #: Width and ink of a character the table lacks: as wide and tall as the widest capitals.
 UNKNOWN = (0.9, 0.75, 0.25)
 TABLE = "font_metrics.json"

@@ -120,21 +120,41 @@ def _half_angle(numerator: float, denominator: float, fallback: complex) -> floa
 
 def fourbar(ground: float, crank: float, coupler: float, rocker: float, theta2: float,
             circuit: int = 1) -> FourBar:
-    """θ3 and θ4 by the text's equations: circuit 1 by 7.5-7.6, circuit 2 by 7.7-7.8."""
+    """BD, γ, θ3 and θ4 by the text's equations: circuit 1 by 7.5-7.6, circuit 2 by 7.7-7.8."""
+    bd = diagonal(ground, crank, theta2)
+    gamma = transmission_angle(coupler, rocker, bd)
+    return FourBar(bd, gamma, coupler_angle(ground, crank, coupler, rocker, theta2, gamma, circuit),
+                   rocker_angle(ground, crank, coupler, rocker, theta2, gamma, circuit))
+
+
+def _sign(circuit: int) -> float:
     if circuit not in CIRCUITS:
         raise ValueError(f"circuit must be 1 or 2, not {circuit!r}")
+    return 1.0 if circuit == 1 else -1.0
+
+
+def coupler_angle(ground: float, crank: float, coupler: float, rocker: float, theta2: float, gamma: float,
+                  circuit: int = 1) -> float:
+    """θ3 = 2 tan⁻¹[(-L2 sin θ2 ± L4 sin γ) / (L1 + L3 - L2 cos θ2 - L4 cos γ)] (eq 7.5, 7.7 with -)."""
+    sign = _sign(circuit)
     l1, l2, l3, l4 = ground, crank, coupler, rocker
-    bd = diagonal(l1, l2, theta2)
-    gamma = transmission_angle(l3, l4, bd)
-    sign = 1.0 if circuit == 1 else -1.0
-    s2, c2, sg, cg = math.sin(theta2), math.cos(theta2), math.sin(gamma), math.cos(gamma)
-    # In circuit 1, e^{iθ3} (L3 - L4 e^{iγ}) = L1 - L2 e^{iθ2}: both sides point along the coupler.
-    bd_vector = complex(l1 - l2 * c2, -l2 * s2)
-    theta3 = _half_angle(-l2 * s2 + sign * l4 * sg, l1 + l3 - l2 * c2 - l4 * cg,
-                         bd_vector / complex(l3 - l4 * cg, -sign * l4 * sg))
-    theta4 = _half_angle(l2 * s2 - sign * l3 * sg, l4 - l1 + l2 * c2 - l3 * cg,
-                         -bd_vector / complex(l4 - l3 * cg, sign * l3 * sg))
-    return FourBar(bd, gamma, theta3, theta4)
+    # e^{iθ3} (L3 - L4 e^{±iγ}) = L1 - L2 e^{iθ2}, the vector B -> D
+    fallback = complex(l1 - l2 * math.cos(theta2), -l2 * math.sin(theta2)) / \
+        complex(l3 - l4 * math.cos(gamma), -sign * l4 * math.sin(gamma))
+    return _half_angle(-l2 * math.sin(theta2) + sign * l4 * math.sin(gamma),
+                       l1 + l3 - l2 * math.cos(theta2) - l4 * math.cos(gamma), fallback)
+
+
+def rocker_angle(ground: float, crank: float, coupler: float, rocker: float, theta2: float, gamma: float,
+                 circuit: int = 1) -> float:
+    """θ4 = 2 tan⁻¹[(L2 sin θ2 ∓ L3 sin γ) / (L4 - L1 + L2 cos θ2 - L3 cos γ)] (eq 7.6, 7.8 with +)."""
+    sign = _sign(circuit)
+    l1, l2, l3, l4 = ground, crank, coupler, rocker
+    # e^{iθ4} (L4 - L3 e^{∓iγ}) = L2 e^{iθ2} - L1, the vector D -> B
+    fallback = complex(l2 * math.cos(theta2) - l1, l2 * math.sin(theta2)) / \
+        complex(l4 - l3 * math.cos(gamma), sign * l3 * math.sin(gamma))
+    return _half_angle(l2 * math.sin(theta2) - sign * l3 * math.sin(gamma),
+                       l4 - l1 + l2 * math.cos(theta2) - l3 * math.cos(gamma), fallback)
 
 
 def can_assemble(ground: float, crank: float, coupler: float, rocker: float, theta2: float) -> bool:
@@ -252,3 +272,17 @@ def circumcentre(p1, p2, p3) -> tuple[float, float]:
     a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
     return ((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / det,
             (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / det)
+
+
+def moves_between(a, d, b1, c1, b2, c2, samples: int = 90) -> bool:
+    """Whether the four-bar A-B-C-D (ground pivots a, d) carries B and C from (b1, c1) to (b2, c2)
+    without leaving its circuit: the crank turns the short way round and the linkage assembles
+    all along, with C on the same side of BD at both ends."""
+    ground, crank = math.dist(a, d), math.dist(a, b1)
+    coupler, rocker = math.dist(b1, c1), math.dist(d, c1)
+    theta1 = math.atan2(d[1] - a[1], d[0] - a[0])
+    start = math.atan2(b1[1] - a[1], b1[0] - a[0]) - theta1
+    turn = wrap(math.atan2(b2[1] - a[1], b2[0] - a[0]) - theta1 - start)
+    if (side(b1, d, c1) > 0) != (side(b2, d, c2) > 0):
+        return False
+    return all(can_assemble(ground, crank, coupler, rocker, start + turn * k / samples) for k in range(samples + 1))

@@ -1,0 +1,116 @@
+"""Worked derivations for moving a link where it is wanted (course text Problem 7.2 and §7.11).
+
+- A support link swung by a linear actuator (Problem 7.2): the actuator, pinned to the ground
+  and to the link, closes a triangle with the two ground pivots, so the cosine law gives the
+  link's angle for any actuator length.
+- Two-position synthesis (§7.11): a ground pivot that moves a point of the coupler from one
+  position to the other lies on the perpendicular bisector of the two positions; the sheet fixes
+  the design choice that picks one point of each bisector (both pivots on the floor, y = 0).
+"""
+from __future__ import annotations
+
+import math
+
+from ..mechanics import linkages as lk
+from .fourbars import GRASHOF_REASON
+from .polygons import APART, angle_gap_deg, require_angle_apart
+
+SENSES = ("clockwise", "counter-clockwise")
+PIVOT = {"M": "E", "N": "F"}   # the ground pivots of the links to M and to N
+
+
+def actuator_swing(p, d):
+    """Problem 7.2: the support link's angle as drawn and after its actuator is retracted to s2.
+
+    The triangle A (link pivot), O (actuator pivot), B (actuator pin) has AO fixed, AB = r and
+    OB the actuator's length, so the cosine law gives the angle OAB for each length; B stays on
+    the side of AO where it is drawn.
+    """
+    ao = d.step("AO", math.hypot(p.xO, p.yO), "m", symbol="AO", formula=r"\sqrt{@xO^2 + @yO^2}",
+                note="between the link's pivot A and the actuator's pivot O")
+    beta = d.step("beta", math.atan2(p.yO, p.xO), "rad", symbol=r"\beta", formula=r"\tan^{-1}\frac{@yO}{@xO}",
+                  note="the direction A → O, in the quadrant of its components")
+    turn = 1.0 if str(p.side) == "left" else -1.0
+    sign = "+" if turn > 0 else "-"
+    angles = {}
+    for k, length in ((1, "s1"), (2, "s2")):
+        angle = d.step(f"angle{k}", lk.actuator_link_angle(ao, p.r, getattr(p, length)), "rad",
+                       symbol=rf"\angle OAB_{k}", formula=rf"\cos^{{-1}}\frac{{@AO^2 + @r^2 - @{length}^2}}{{2\,@AO\,@r}}",
+                       note=f"in triangle OAB with the actuator {'as drawn' if k == 1 else 'retracted'} (cosine law)")
+        angles[k] = d.step(f"theta{k}", lk.wrap(beta + turn * angle), "rad", symbol=rf"\theta_{k}",
+                           formula=rf"@beta {sign} @angle{k}", note=f"B on the {p.side} of the line from A to O")
+        d.mistake(f"theta{k}", "other_side", lk.wrap(beta - turn * angle))
+        d.mistake(f"theta{k}", "interior_angle", angle)
+        if d.strict:
+            require_angle_apart(d, angles[k], lk.wrap(beta - turn * angle), "the other side of AO")
+            require_angle_apart(d, angles[k], angle, "the interior angle")
+        d.require(math.radians(25) <= angle <= math.radians(155), "the actuator nearly in line with the link")
+    rotation = lk.wrap(angles[2] - angles[1])
+    size = d.step("rotation", abs(rotation), "rad", symbol=r"\Delta\theta", formula=r"|@theta2 - @theta1|",
+                  note="the support link's rotation")
+    d.step("sense", SENSES[rotation > 0], "", symbol=r"\text{sense}",
+           note="retracting pulls B towards O, " + ("counter-clockwise" if rotation > 0 else "clockwise") + " here")
+    d.mistake("rotation", "radians_for_degrees", math.radians(size))
+    d.mistake("sense", "opposite", SENSES[rotation <= 0])
+    d.require(math.radians(8) <= size <= math.radians(90), "a rotation the sheet's drawing could not show")
+
+
+def two_position_synthesis(p, d):
+    """§7.11 with two positions: ground pivots E (for M) and F (for N) on the floor."""
+    points = {}
+    for k in (1, 2):
+        xm, ym, phi = (getattr(p, f"{n}{k}") for n in ("xM", "yM", "phi"))
+        points[f"M{k}"] = (xm, ym)
+        xn = d.step(f"xN{k}", xm + p.b * math.cos(phi), "m", symbol=f"x_{{N{k}}}", formula=rf"@xM{k} + @b\cos @phi{k}")
+        yn = d.step(f"yN{k}", ym + p.b * math.sin(phi), "m", symbol=f"y_{{N{k}}}", formula=rf"@yM{k} + @b\sin @phi{k}")
+        points[f"N{k}"] = (xn, yn)
+    pivots, lengths = {}, {}
+    for name in ("M", "N"):
+        (x1, y1), (x2, y2) = points[f"{name}1"], points[f"{name}2"]
+        d.require(abs(x2 - x1) > 0.15 * p.b, f"the bisector of {name}1 {name}2 nearly parallel to the floor")
+        pivot = PIVOT[name]
+        x = d.step(f"xO{name}", lk.bisector_on_line((x1, y1), (x2, y2), 0.0)[0], "m", symbol=f"x_{pivot}",
+                   formula=rf"\frac{{@x{name}1 + @x{name}2}}{{2}} + \frac{{@y{name}1 + @y{name}2}}{{2}}"
+                           rf"\,\frac{{@y{name}2 - @y{name}1}}{{@x{name}2 - @x{name}1}}",
+                   note=f"the perpendicular bisector of {name}1 {name}2 meets the floor y = 0")
+        pivots[name] = (x, 0.0)
+        lengths[name] = d.step(f"R{name}", math.hypot(x1 - x, y1), "m", symbol=f"{pivot}{name}",
+                               formula=rf"\sqrt{{(@x{name}1 - @xO{name})^2 + @y{name}1^2}}",
+                               note=f"the link from {pivot} to {name}: it reaches {name}2 as well")
+        mid = (x1 + x2) / 2
+        d.mistake(f"xO{name}", "midpoint", mid)
+        d.mistake(f"R{name}", "midpoint", math.hypot(x1 - mid, y1))
+    ground = d.step("ground", abs(pivots["N"][0] - pivots["M"][0]), "m", symbol="EF",
+                    formula=r"|@xON - @xOM|", note="the ground link")
+    g = lk.grashof(ground, lengths["M"], p.b, lengths["N"])
+    d.step("kind", g.kind, "", symbol=r"\text{class}",
+           note=f"S + L = {_mm(g.s_plus_l)} against P + Q = {_mm(g.p_plus_q)}, with EM the input: "
+                f"{GRASHOF_REASON[g.kind]}")
+    wrong = lk.grashof_kind(g.s + g.p, g.l + g.q, g.shortest)
+    if wrong != g.kind:
+        d.mistake("kind", "wrong_pair", wrong)
+    _require_buildable(p, d, points, pivots, ground)
+
+
+def _mm(metres: float) -> str:
+    return f"{metres * 1000:.4g} mm"
+
+
+def _require_buildable(p, d, points, pivots, ground) -> None:
+    """The linkage must carry the coupler from one position to the other, with pivots a real machine has."""
+    if not d.strict:
+        return
+    d.require(lk.moves_between(pivots["M"], pivots["N"], points["M1"], points["N1"], points["M2"], points["N2"]),
+              "the linkage cannot move from one position to the other without changing circuit")
+    span = max(abs(v) for pt in points.values() for v in pt)
+    for name in ("M", "N"):
+        d.require(abs(pivots[name][0]) <= 1.5 * span, "a ground pivot far outside the work area")
+        length = d.value_of(f"R{name}")
+        d.require(0.25 * p.b <= length <= 4 * p.b, "a link out of proportion to the coupler")
+        mid = (points[f"{name}1"][0] + points[f"{name}2"][0]) / 2
+        d.require(abs(pivots[name][0] - mid) >= APART * length, "the pivot is nearly below the midpoint")
+    d.require(ground >= 0.25 * p.b, "the ground pivots too close together")
+    for name in ("M", "N"):
+        (x1, y1), (x2, y2), o = points[f"{name}1"], points[f"{name}2"], pivots[name]
+        swing = angle_gap_deg(math.atan2(y1 - o[1], x1 - o[0]), math.atan2(y2 - o[1], x2 - o[0]))
+        d.require(swing >= 10, "a link that barely turns")

@@ -1,0 +1,150 @@
+"""Chapter 7 templates against the course text's worked examples, through exgen.solve.
+
+Printed values: the four-bar example (§7.9: the vector method in its own frame, then the
+analytical method in the frame turned to the ground line) and the slider-crank example (§7.10).
+Errata and slips, each recomputed independently below:
+- four-bar example, analytical method: θ3 is printed 6.14°; eq 7.5 with the example's own
+  numbers gives 2 tan⁻¹(1.0390 / 23.1177) = 5.146°, and the vector method agrees (84.87° for the
+  text's R3 from its D to B is 264.85° for B to C, turned back by the frame's 90° and mirrored:
+  5.15°). θ4 = 66.38° is right.
+- the same: γ is printed 61.2377°; cos⁻¹((16² + 10² − 14.21353²)/320) = 61.23794°.
+- the vector method rounds θ_H to 123° and so prints φ = 80.65° and θ4 = 203.65°; unrounded they
+  are 80.68° and 203.62° (Figure 7.32 has 203.62°).
+Problems 7.1-7.4 give their data in figures the text does not carry; the templates that follow
+them are checked here on data of our own, against the same equations worked by hand.
+"""
+import math
+
+import pytest
+
+from exgen.solve import solve
+
+deg, rad = math.degrees, math.radians
+
+
+def answers(bank, template_id, **given):
+    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
+    return ({part: answer.value for part, answer in variant.answers.items()},
+            {s.name: s.value for s in variant.steps}, warnings)
+
+
+def test_four_bar_example_analytical_method(bank):
+    got, steps, warnings = answers(bank, "linkages.fourbar_position", L1="14 inch", L2="8 inch", L3="16 inch",
+                                   L4="10 inch", theta2="75 deg", circuit="1")
+    assert got["a"] == pytest.approx(14.2135 * 25.4, abs=5e-5 * 25.4)      # BE = 14.2135
+    assert got["b"] == pytest.approx(61.2377, abs=5e-4)                    # γ (exactly 61.23794°)
+    # Erratum: the text prints θ3 = 6.14°; eq 7.5 gives 5.146°.
+    assert got["c"] == pytest.approx(5.146, abs=5e-4)
+    assert got["c"] != pytest.approx(6.14, abs=0.5)
+    assert got["d"] == pytest.approx(66.38, abs=5e-3)
+    assert warnings == []
+
+
+def test_four_bar_example_vector_method_and_point_c(bank):
+    got, steps, warnings = answers(bank, "linkages.coupler_point", xA="0 inch", yA="14 inch", L2="8 inch",
+                                   L3="16 inch", L4="10 inch", theta2="195 deg", circuit="2", CP="14 inch",
+                                   BP="28 inch", side="right")
+    inch = 0.0254
+    assert (steps["xB"] / inch, steps["yB"] / inch) == pytest.approx((-7.73, 11.93), abs=5e-3)   # R_H
+    assert deg(steps["theta_H"]) == pytest.approx(123, abs=0.1)            # printed 123° (rounded)
+    # printed r_H = 14.22 from the rounded components (7.73, 11.93); it is the analytical method's BE
+    assert steps["r_H"] / inch == pytest.approx(14.2135, abs=5e-5)
+    assert deg(steps["phi"]) == pytest.approx(80.65, abs=0.05)             # printed from θ_H = 123°
+    assert got["a"] % 360 == pytest.approx(203.62, abs=5e-3)               # θ4 (Figure 7.32)
+    # the text's R3 runs from its D (our C) to B: 84.87°; B to C is 180° round
+    assert (got["b"] + 180) % 360 == pytest.approx(84.87, abs=0.02)
+    assert got["c"] == pytest.approx(137.82, abs=5e-3)                     # α
+    assert deg(steps["theta6"]) % 360 == pytest.approx(222.68, abs=0.02)   # θ6 = θ3 + α (text's θ3)
+    # printed C = (-19.45, -13.50) from angles rounded to 0.01°; unrounded (-19.4552, -13.4961)
+    assert got["d"] / 25.4 == pytest.approx(-19.4552, abs=5e-5)
+    assert got["e"] / 25.4 == pytest.approx(-13.4961, abs=5e-5)
+    assert (got["d"] / 25.4, got["e"] / 25.4) == pytest.approx((-19.45, -13.50), abs=0.006)
+    assert warnings == []
+
+
+def test_slider_crank_example(bank):
+    """§7.10: A at (2, 1) from O, crank 0.5 at 75°, coupler 1.75, slide vertical 1 right of A, P 2 below C."""
+    got, steps, warnings = answers(bank, "linkages.slider_crank", slider="below", L1="1 inch", L2="0.5 inch",
+                                   L3="1.75 inch", theta2="75 deg", xA="2 inch", yA="1 inch", tip="2 inch")
+    assert deg(steps["theta3"]) == pytest.approx(60.17, abs=5e-3)          # eq 7.13
+    assert got["a"] == pytest.approx(-60.17, abs=5e-3)                     # the vector method's -60.16°
+    assert got["b"] == pytest.approx(1.035 * 25.4, abs=5e-4 * 25.4)        # L4 = r4 = 1.035 in
+    assert got["c"] == pytest.approx(44.83, abs=5e-3)                      # γ, eq 7.12
+    assert got["d"] == pytest.approx(3 * 25.4, abs=1e-9)                   # x_P = 3 in
+    assert got["e"] == pytest.approx(-2.035 * 25.4, abs=5e-4 * 25.4)       # y_P = -2.035 in
+    assert warnings == []
+
+
+def test_horizontal_offset_slider_crank_turned_35_degrees_clockwise(bank):
+    """Problem 7.1's form: an offset crank turned 35° clockwise (θ2 = 325°), eqs 7.10-7.12 by hand."""
+    got, steps, _ = answers(bank, "linkages.slider_crank", slider="right", L1="20 mm", L2="50 mm", L3="180 mm",
+                            theta2="325 deg", xA="0 mm", yA="0 mm", tip="60 mm")
+    theta2 = rad(-35)
+    theta3 = math.asin((20 + 50 * math.sin(theta2)) / 180)
+    l4 = 50 * math.cos(theta2) + 180 * math.cos(theta3)
+    assert got["a"] == pytest.approx(-deg(theta3))
+    assert got["b"] == pytest.approx(l4)
+    # eq 7.12 gives 180° - (θ2 + θ3) = 217.8° here: past 180°, the angle ABC is its explement
+    assert 180 - deg(theta2 + theta3) > 180
+    assert got["c"] == pytest.approx(360 - (180 - deg(theta2 + theta3)))
+    assert (got["d"], got["e"]) == pytest.approx((l4 + 60, -20))
+
+
+def test_slider_on_the_other_branch(bank):
+    got, _, _ = answers(bank, "linkages.slider_crank", slider="left", L1="0 mm", L2="50 mm", L3="180 mm",
+                        theta2="60 deg", xA="100 mm", yA="50 mm", tip="40 mm")
+    theta3 = math.asin(50 * math.sin(rad(60)) / 180)
+    assert got["a"] % 360 == pytest.approx(180 + deg(theta3))    # down to the left
+    l4 = 180 * math.cos(theta3) - 50 * math.cos(rad(60))
+    assert got["b"] == pytest.approx(l4)
+    assert (got["d"], got["e"]) == pytest.approx((100 - l4 - 40, 50))
+
+
+@pytest.mark.parametrize("lengths, ground, kind", [
+    ((14, 8, 16, 10), "DA", "change-point"),       # the four-bar example: 8 + 16 = 14 + 10
+    ((70, 20, 80, 50), "DA", "crank-rocker"),      # the shortest, AB, beside the ground
+    ((70, 20, 80, 50), "AB", "double-crank"),      # the shortest grounded
+    ((70, 20, 80, 50), "CD", "double-rocker"),     # the link opposite the shortest grounded
+    ((80, 40, 60, 50), "DA", "triple-rocker"),     # 40 + 80 > 60 + 50
+])
+def test_grashof_table_7_1(bank, lengths, ground, kind):
+    da, ab, bc, cd = lengths
+    got, steps, _ = answers(bank, "linkages.grashof", AB=f"{ab} mm", BC=f"{bc} mm", CD=f"{cd} mm",
+                            DA=f"{da} mm", ground=ground)
+    assert got["a"] == min(lengths) + max(lengths)
+    assert got["b"] == sum(lengths) - min(lengths) - max(lengths)
+    assert got["c"] == kind
+
+
+def test_crank_rocker_limit_positions(bank):
+    got, _, _ = answers(bank, "linkages.rocker_swing", L1="70 mm", L2="20 mm", L3="80 mm", L4="50 mm")
+    ext = 180 - deg(math.acos((70 ** 2 + 50 ** 2 - 100 ** 2) / (2 * 70 * 50)))
+    fold = 180 - deg(math.acos((70 ** 2 + 50 ** 2 - 60 ** 2) / (2 * 70 * 50)))
+    assert (got["a"], got["b"], got["c"]) == pytest.approx((ext, fold, abs(ext - fold)))
+
+
+def test_support_link_retracted_by_its_actuator(bank):
+    """Problem 7.2's form: A at the origin, O at (400, -100) mm, B 300 mm up the link, 600 -> 400 mm."""
+    got, _, _ = answers(bank, "linkages.actuator_swing", xO="400 mm", yO="-100 mm", r="300 mm", s1="600 mm",
+                        s2="400 mm", side="left")
+    ao = math.hypot(400, -100)
+    beta = math.atan2(-100, 400)
+    before = beta + math.acos((ao ** 2 + 300 ** 2 - 600 ** 2) / (2 * ao * 300))
+    after = beta + math.acos((ao ** 2 + 300 ** 2 - 400 ** 2) / (2 * ao * 300))
+    assert got["a"] == pytest.approx(deg(before))
+    assert got["b"] == pytest.approx(deg(after))
+    assert got["c"] == pytest.approx(deg(before - after))
+    assert got["d"] == "clockwise"
+
+
+def test_two_position_synthesis_pivots_on_the_floor(bank):
+    got, steps, _ = answers(bank, "linkages.two_position_synthesis", b="200 mm", xM1="-300 mm", yM1="300 mm",
+                            phi1="30 deg", xM2="100 mm", yM2="450 mm", phi2="-20 deg")
+    m1, m2 = (-300, 300), (100, 450)
+    n1 = (m1[0] + 200 * math.cos(rad(30)), m1[1] + 200 * math.sin(rad(30)))
+    n2 = (m2[0] + 200 * math.cos(rad(-20)), m2[1] + 200 * math.sin(rad(-20)))
+    for (p1, p2), x_part, r_part in (((m1, m2), "a", "b"), ((n1, n2), "c", "d")):
+        x = got[x_part]
+        assert math.hypot(p1[0] - x, p1[1]) == pytest.approx(math.hypot(p2[0] - x, p2[1]))  # on the bisector
+        assert got[r_part] == pytest.approx(math.hypot(p1[0] - x, p1[1]))
+    assert got["e"] in ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
