@@ -177,10 +177,21 @@ def test_compound_drive_draws_four_pulleys_to_scale(bank):
 
 
 def test_missing_size_is_a_clear_error(bank, flat):
-    template = dataclasses.replace(flat.template, params=tuple(p for p in flat.template.params if p.name != "X"))
-    broken = dataclasses.replace(flat, template=template, params=tuple(p for p in flat.params if p.name != "X"))
-    with pytest.raises(ExgenError, match="'X'"):
+    template = dataclasses.replace(flat.template, params=tuple(p for p in flat.template.params if p.name != "d2"))
+    broken = dataclasses.replace(flat, template=template, params=tuple(p for p in flat.params if p.name != "d2"))
+    with pytest.raises(ExgenError, match="'d2'"):
         belt_drive(broken)
+
+
+def test_a_drive_without_centre_distance_is_drawn_clear_and_not_dimensioned(bank):
+    variant = make_variant(bank.get("belts.driven_speed_slip"), 3)
+    svg = belt_drive(variant)
+    labels = texts(svg)
+    assert not any(t.startswith("X =") for t in labels) and "N\u2082 = ?" in labels
+    assert any(t.startswith("belt ") and t.endswith(" thick") for t in labels)
+    (driver,), (driven,) = circles(svg, "driver"), circles(svg, "driven")
+    gap = float(driven.get("cx")) - float(driver.get("cx")) - float(driver.get("r")) - float(driven.get("r"))
+    assert gap > 0.5 * max(float(driver.get("r")), float(driven.get("r")))
 
 
 @pytest.mark.parametrize("value, text", [(12.5, "12.5"), (3.0, "3"), (-0.004, "0"), (-1.236, "-1.24"), (0.1, "0.1")])

@@ -9,9 +9,9 @@ from __future__ import annotations
 from .groove import groove_inset
 from .pulleys import (ARC_GAP, BELT_GAP, BELT_W, GAP, belt_motion, centre_distance, circle_path, diameter_mark,
                       hidden, label_stack, need, pulley, run_label)
-from .svg import Drawing, subscripted
+from .svg import NOTE_SIZE, Drawing, subscripted
 from .tangents import belt_loop
-from .values import choice, shown
+from .values import Shown, choice, shown
 
 GEOM_W = 420.0       # px from the driver's far rim to the driven pulley's far rim
 COMPOUND_W = 560.0   # the same for the two stages of a compound drive
@@ -20,8 +20,13 @@ STAGE_GAP = 0.6      # compound drive: clear space between pulleys, as a fractio
 
 
 def belt_drive(variant) -> str:
-    """An open or crossed belt drive with d₁, d₂, X, the driver speed and the tight side."""
-    d1, d2, x = need(variant, "d1"), need(variant, "d2"), need(variant, "X")
+    """An open or crossed belt drive with d₁, d₂, X, the speeds and the tight side. Where the centre
+    distance is not data, the pulleys are drawn a clear space apart and it is not dimensioned; a belt
+    thickness is noted under the drive."""
+    d1, d2 = need(variant, "d1"), need(variant, "d2")
+    x = shown(variant, "X")
+    if x is None or not x.si > 0:
+        x = Shown("X", (d1.si + d2.si) / 2 + STAGE_GAP * 1.6 * max(d1.si, d2.si), "")
     n1, n2, groove = shown(variant, "N1"), shown(variant, "N2"), shown(variant, "groove")
     crossed = choice(variant, "drive", "open") == "crossed"
     span = GEOM_W if groove is None else GEOM_W - 60  # leave room for the groove inset
@@ -52,7 +57,12 @@ def belt_drive(variant) -> str:
     else:
         belt_motion(drawing, loop, (0.5, 0.5))
         run_label(drawing, loop.tight, 0.5, "tight side", below=True)
-    centre_distance(drawing, c1, rb1, c2, rb2, drawing.box[3] + 14, x.label("X"))
+    if x.value_text:
+        centre_distance(drawing, c1, rb1, c2, rb2, drawing.box[3] + 14, x.label("X"))
+    thickness = shown(variant, "t")
+    if thickness is not None:
+        drawing.text(((c1[0] + c2[0]) / 2, drawing.box[3] + 22), f"belt {thickness.value_text} thick",
+                     size=NOTE_SIZE, style="italic", cls="label-t")
     if groove is not None:
         groove_inset(drawing, drawing.box[2] + 16, drawing.box[1], groove.si, groove.label("2\u03b2"))
     kind = "Crossed" if crossed else "Open"

@@ -30,12 +30,16 @@ class Shown:
 
 
 def shown(variant, name: str) -> Shown | None:
-    """The param `name` as printed, else the step `name` as an unknown, else None."""
+    """The param `name` as printed, else the step `name` as an unknown, else the first step named
+    `name_...` (an unknown the parts ask several ways, e.g. d2_plain and d2_slip) as an unknown, else None."""
     for p in variant.params:
         if p.name == name:
             return Shown(name, _as_float(p.si), str(p))
     for s in variant.steps:
         if s.name == name:
+            return Shown(name, _as_float(s.value), UNKNOWN)
+    for s in variant.steps:
+        if s.name.startswith(name + "_"):
             return Shown(name, _as_float(s.value), UNKNOWN)
     return None
 
