@@ -5,6 +5,8 @@ Derivation. Each `d.step(...)` records symbol, formula, value and unit and retur
 the rest of the solution uses. When the grader re-runs a solver with `overrides`, a step
 named there returns the student's value instead, so later steps follow from it (error
 carried forward). `d.mistake(...)` records the value a known wrong method would give.
+`d.table(...)` places a table in the worked solution where the course text works with one (a
+balancing table, the tabular method of an epicyclic).
 """
 from __future__ import annotations
 
@@ -20,7 +22,13 @@ PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)")
 
 @dataclass(frozen=True)
 class Step:
-    """One line of a worked solution. `formula` is LaTeX with @name placeholders."""
+    """One line of a worked solution. `formula` is LaTeX with @name placeholders.
+
+    `shown`: the unit the key shows the value in, and works the formula in ("rpm" for a speed ratio,
+    "in" for a diametral pitch); by default an angle is shown in degrees and anything else in SI.
+    `symbolic`: False when the formula's symbols would only restate the left side (β = 2β/2): the key
+    then shows it with numbers only.
+    """
 
     name: str
     symbol: str
@@ -29,6 +37,43 @@ class Step:
     unit: str = ""
     note: str = ""
     overridden: bool = False
+    shown: str = ""
+    symbolic: bool = True
+
+
+@dataclass(frozen=True)
+class Column:
+    """A table column: its heading (LaTeX) and the SI unit of its numbers (angles, rad, are shown in degrees)."""
+
+    head: str
+    unit: str = ""
+
+
+@dataclass(frozen=True)
+class Table:
+    """A table in the worked solution, placed before step number `at`.
+
+    A cell is a number (SI, in its column's unit), "@name" (the value of a step or given), text (with
+    $LaTeX$), or None (blank). `total` is a last row, usually of sums ("Σ"). The steps a table shows
+    get no line of their own, unless a part asks for them or they are listed in `shown`.
+    """
+
+    title: str
+    columns: tuple[Column, ...]
+    rows: tuple[tuple, ...]
+    total: tuple | None = None
+    at: int = 0
+    shown: tuple[str, ...] = ()
+
+    @property
+    def names(self) -> set[str]:
+        """The steps and givens the table shows."""
+        cells = [c for row in self.rows + ((self.total,) if self.total else ()) for c in row]
+        return {c[1:] for c in cells if isinstance(c, str) and PLACEHOLDER.fullmatch(c)}
+
+    @property
+    def hides(self) -> set[str]:
+        return self.names - set(self.shown)
 
 
 class Params:
@@ -61,18 +106,27 @@ class Derivation:
         self.overrides = dict(overrides or {})
         self.steps: list[Step] = []
         self.mistakes: dict[str, dict[str, float]] = {}
+        self.inserts: list[Table] = []
         self._by_name: dict[str, Step] = {}
 
     def step(self, name: str, value, unit: str = "", *, symbol: str | None = None,
-             formula: str = "", note: str = ""):
+             formula: str = "", note: str = "", shown: str = "", symbolic: bool = True):
         """Record a step and return its value (or the override for it, when re-running for ECF)."""
         overridden = name in self.overrides
         if overridden:
             value = self.overrides[name]
-        step = Step(name, symbol or default_symbol(name), formula, value, unit, note, overridden)
+        step = Step(name, symbol or default_symbol(name), formula, value, unit, note, overridden, shown, symbolic)
         self.steps.append(step)
         self._by_name[name] = step
         return value
+
+    def table(self, title: str, columns, rows, total=None, shown=()) -> Table:
+        """Show steps and values as a table here, after the steps recorded so far (see Table)."""
+        columns = tuple(c if isinstance(c, Column) else Column(*c) for c in columns)
+        table = Table(title, columns, tuple(tuple(r) for r in rows), tuple(total) if total else None,
+                      len(self.steps), tuple(shown))
+        self.inserts.append(table)
+        return table
 
     def mistake(self, step_name: str, mistake: str, value: float) -> None:
         """Record what `step_name` comes out as by the known wrong method `mistake`."""
@@ -112,26 +166,6 @@ class Derivation:
         return getattr(self.params, name)
 
 
-
-
-def expand(formula: str, symbol_of, value_of=None, fmt=None) -> str:
-    """Replace @name by its symbol, or (with value_of and fmt) by its formatted value.
-
-    In the substituted form a thin space next to a placeholder, which juxtaposes symbols
-    (``@mu\\,@theta``), becomes an explicit ``\\times`` between the numbers.
-    """
-    def symbol(match):
-        return symbol_of(match.group(1))
-
-    def number(match):
-        text = fmt(value_of(match.group(1)))
-        return f"({text})" if text.startswith("-") else text
-
-    if value_of is None:
-        return PLACEHOLDER.sub(symbol, formula)
-    times = re.sub(r"\s*\\,\s*(?=@)", r" \\times ", formula)
-    times = re.sub(r"(@[A-Za-z_]\w*)\s*\\,\s*", r"\1 \\times ", times)
-    return PLACEHOLDER.sub(number, times)
 
 
 GREEK = {

@@ -110,7 +110,7 @@ _KIND_EXAMPLES = {
     "m/s": "speed", "m/s^2": "acceleration", "N": "force", "J": "torque or energy", "W": "power",
     "Pa": "pressure or stress", "kg/m": "mass per unit length", "m^2": "area", "m^3": "volume",
     "kg/m^3": "density", "kg*m^2": "moment of inertia", "kg*m": "mass times radius",
-    "N/m": "stiffness", "N*s/m": "damping coefficient",
+    "N/m": "stiffness", "N*s/m": "damping coefficient", "1/m": "number per unit length",
 }
 
 

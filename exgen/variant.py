@@ -67,6 +67,7 @@ class Variant:
     asks: Mapping[str, str]
     tries: int = field(default=1, compare=False)
     warnings: tuple[str, ...] = ()
+    inserts: tuple = ()  # tables of the worked solution (derivation.Table)
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -122,7 +123,7 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
         statement=render_text(template.statement, context),
         asks=MappingProxyType({p.id: render_text(p.ask, context) for p in template.parts}),
-        tries=tries, warnings=tuple(derivation.warnings),
+        tries=tries, warnings=tuple(derivation.warnings), inserts=tuple(derivation.inserts),
     )
 
 

@@ -1,6 +1,6 @@
 import pytest
 
-from exgen.derivation import Derivation, Params, default_symbol, expand
+from exgen.derivation import Derivation, Params, default_symbol
 from exgen.errors import InvalidDraw
 from exgen.variant import answer_for, rerun
 
@@ -13,13 +13,14 @@ def test_default_symbol(name, symbol):
     assert default_symbol(name) == symbol
 
 
-def test_expand_symbolic_and_substituted():
-    symbols = {"mu": r"\mu", "theta": r"\theta", "T1": "T_1", "T2": "T_2", "v": "v"}.get
-    values = {"mu": 0.3, "theta": 2.947, "T1": 2000.0, "T2": -826.2, "v": 5.236}.get
-    fmt = "{:g}".format
-    assert expand(r"e^{@mu\,@theta}", symbols) == r"e^{\mu\,\theta}"
-    assert expand(r"e^{@mu\,@theta}", symbols, values, fmt) == r"e^{0.3 \times 2.947}"
-    assert expand(r"(@T1 - @T2)\,@v", symbols, values, fmt) == r"(2000 - (-826.2)) \times 5.236"
+def test_tables_stand_where_the_solver_places_them():
+    d = Derivation(Params({"m": 2.0, "r": 0.5}, {}))
+    d.step("mr", 1.0, "kg*m", formula=r"@m\,@r")
+    table = d.table("Planes", [("Plane",), ("$m r$", "kg*m")], [["1", "@mr"]], total=["Σ", "@mr"])
+    d.step("B", 2.0, "kg")
+    assert table.at == 1 and table.names == {"mr"} and table.hides == {"mr"}
+    kept = d.table("Again", [("x",)], [["@mr"]], shown=("mr",))
+    assert kept.hides == set() and kept.at == 2
 
 
 def test_steps_record_and_overrides_replace():

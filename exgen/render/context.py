@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import re
 
+from .. import units
 from ..answertypes import answer_type
-from .solution import solution
+from .equations import line_pieces, plan
+from .solution import TableBlock, WorkLine, solution
 
 _SVG_TITLE = re.compile(r"<title>(.*?)</title>", re.DOTALL)
 
@@ -72,25 +74,61 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
         "parts": parts,
     }
     if key:
-        context.update(key_context(v, target))
-        # beside the working: the polygons and diagrams the textbook draws (never on a sheet)
-        context["key_figures"] = [{"figure": embed, "caption": target.prose(caption)} for embed, caption in key_figures]
+        context.update(key_context(v, target, key_figures))
     return context
 
 
-def key_context(variant, target) -> dict:
-    """Template reference, given data and worked lines (answers only ever reach a key)."""
+def key_context(variant, target, key_figures=()) -> dict:
+    """Template reference, given data and the worked solution (answers only ever reach a key).
+    `key_figures` are the (embed, caption) of the figures only the key shows: the polygons and
+    diagrams the text draws from its tables, placed after the last table of the working."""
     worked = solution(variant)
     template = variant.template
+    given = [{"symbol": target.math(g.symbol), "label": target.text(g.label),
+              "printed": target.prose(g.printed), "si": target.prose(g.si_text or "")} for g in worked.given]
+    blocks = [line_context(b, target) if isinstance(b, WorkLine) else table_context(b, target) for b in worked.blocks]
+    tables = [i for i, b in enumerate(blocks) if b["kind"] == "table"]
+    at = tables[-1] + 1 if tables else len(blocks)
+    blocks[at:at] = [{"kind": "figure", "figure": embed, "caption": target.prose(caption)}
+                     for embed, caption in key_figures]
     return {
         "template_id": target.prose(template.id),
         "template_title": target.prose(template.title),
-        "source": target.prose(template.source),
+        "source": target.text(template.source),
         "seed": variant.seed,
-        "given": [{"symbol": target.math(g.symbol), "label": target.text(g.label),
-                   "printed": target.prose(g.printed), "si": target.prose(g.si_text or "")}
-                  for g in worked.given],
-        "lines": [{"symbol": target.math(line.symbol), "chain": line.chain(target)[1:],
-                   "note": target.text(line.note), "parts": ", ".join(f"({p})" for p in line.parts)}
-                  for line in worked.lines],
+        "given": given,
+        "given_si": any(g.si_text for g in worked.given),
+        "blocks": blocks,
     }
+
+
+def line_context(line: WorkLine, target) -> dict:
+    """A worked line: its chain (one line) and its rows (for a layout that breaks long lines)."""
+    latex, written = line_pieces(line, target)
+    rows = []
+    for row in plan(latex):
+        pieces = []
+        for segment in row:
+            text = " ".join(written[segment.piece][segment.lo:segment.hi])
+            pieces.append(("= " if segment.start and segment.piece else "") + text)
+        rows.append(pieces)
+    return {"kind": "line", "equation": target.equation(rows), "note": target.text(line.note),
+            "parts": ", ".join(f"({p})" for p in line.parts)}
+
+
+def table_context(table: TableBlock, target) -> dict:
+    def cell(value) -> str:
+        if value is None:
+            return ""
+        if isinstance(value, str):
+            return target.text(value)
+        return target.inline(target.number(value.value)) if not isinstance(value.value, str) else target.prose(value.value)
+
+    head = []
+    for column in table.columns:
+        shown = "deg" if column.unit == "rad" else column.unit
+        unit = units.pretty_unit(shown) if shown else ""
+        head.append(target.text(column.head) + (f" ({target.prose(unit)})" if unit else ""))
+    return {"kind": "table", "title": target.text(table.title), "head": head,
+            "rows": [[cell(c) for c in row] for row in table.rows],
+            "total": [cell(c) for c in table.total] if table.total else None}

@@ -1,140 +1,286 @@
-"""The worked solution of a variant as data: the given values and one line per solver step.
+"""The worked solution of a variant as data: the given values, then its lines and tables.
 
-Every line is LaTeX (symbol, symbolic formula, the same with numbers substituted); a
-renderer turns it into its own math with a Target (targets.py). Substituted numbers are the
-SI values the solver used, to four significant figures, so each line can be checked by hand.
+A line is symbol = formula = the formula with numbers = value [= the value in other units]. The
+numbers are shown in the units the line is worked in: an angle in a trigonometric argument in
+degrees; an angle in an exponent, or beside π, in radians; a speed ratio in the rpm it was set in,
+when the step says so (Step.shown). A step shown in one unit and used elsewhere in another gets
+both on its own line, so every number a reader meets has been shown. Numbers have four
+significant figures, or more where four would not reproduce the line's value (a difference of
+nearly equal numbers).
 """
 from __future__ import annotations
 
-import re
+import math
 from dataclasses import dataclass
 from typing import Any
 
 from .. import units
 from ..answertypes import answer_type
-from ..derivation import PLACEHOLDER, default_symbol, expand
+from ..derivation import Column, Table, default_symbol
 from ..errors import ExgenError
-from .targets import MARKDOWN, PLAIN
+from .arithmetic import NotArithmetic, evaluate
+from .formula import Formula, FormulaError, parse, write
+from .targets import MARKDOWN, PLAIN, SIG, number_parts
+from .working import Plan, in_unit, kind, plan, si_unit, used_in_si, values_of
 
-#: The coherent SI unit in which solvers work, by kind of quantity (units.describe).
-SI_UNITS = {
-    "length": "m", "mass": "kg", "time": "s", "angle": "rad", "angular speed": "rad/s", "frequency": "Hz",
-    "speed": "m/s", "acceleration": "m/s^2", "angular acceleration": "rad/s^2", "force": "N",
-    "torque or energy": "N*m", "power": "W", "pressure or stress": "N/m^2", "mass per unit length": "kg/m",
-    "area": "m^2", "volume": "m^3", "density": "kg/m^3", "moment of inertia": "kg*m^2",
-    "mass times radius": "kg*m", "stiffness": "N/m", "damping coefficient": "N*s/m", "pure number": "",
-}
-_ONLY_PLACEHOLDER = re.compile(r"^\s*@[A-Za-z_]\w*\s*$")
+MAX_SIG = 7
+
+
+@dataclass(frozen=True)
+class Number:
+    """A number standing in a formula: its value in the unit it is shown in, and how it is written."""
+
+    value: float
+    sig: int = SIG
+    degrees: bool = False
+    exact: str | None = None     # a given value as printed ("0.33"), written as it is
+
+
+@dataclass(frozen=True)
+class Filled:
+    """A formula with each slot filled: a LaTeX symbol, or a Number (`numbers`: the substituted form)."""
+
+    formula: Formula
+    fills: tuple
+    numbers: bool = False
+
+    def latex(self, number) -> str:
+        """LaTeX with numbers written by `number(Number) -> str`."""
+        return write(self.formula, lambda slot: self._fill(slot, number), self.numbers)
+
+    def _fill(self, slot, number):
+        fill = self.fills[slot.index]
+        return fill if isinstance(fill, str) else number(fill)
+
+
+@dataclass(frozen=True)
+class Quantity:
+    value: Any
+    unit: str
 
 
 @dataclass(frozen=True)
 class GivenLine:
-    """A given value: 'N₁ = 570 rpm = 59.69 rad/s' (the SI part only when it differs)."""
+    """A given value: 'N₁ = 570 rpm = 59.69 rad/s' (SI only when the working uses it in SI)."""
 
     name: str
     label: str
     symbol: str          # LaTeX
     printed: str         # as on the sheet, e.g. "570 rpm"
-    si_text: str | None  # e.g. "59.69 rad/s", or None when the printed value is already SI
+    si_text: str | None  # e.g. "59.69 rad/s", or None
 
 
 @dataclass(frozen=True)
 class WorkLine:
-    """One step: symbol = formula = substituted = value [= answer in the asked unit]."""
+    """One step: symbol = formula = substituted = value [= the value in another unit]."""
 
     name: str
     symbol: str
-    formula: str
-    substituted: str
-    value: Any
-    unit: str
+    formula: Filled | None
+    substituted: Filled | None
+    values: tuple[Quantity, ...]
     note: str = ""
-    parts: tuple[str, ...] = ()                 # parts whose answer this step is
-    asked: tuple[tuple[Any, str], ...] = ()     # the answer again in each part's unit, when different
+    parts: tuple[str, ...] = ()
+
+    @property
+    def value(self):
+        return self.values[0].value
+
+    @property
+    def unit(self) -> str:
+        return self.values[0].unit
+
+    @property
+    def pieces(self) -> tuple:
+        """The members of the chain after the symbol."""
+        return tuple(p for p in (self.formula, self.substituted) if p is not None) + self.values
 
     def chain(self, target) -> list[str]:
-        """The pieces of the line in the target's math, to be joined with ' = '."""
-        pieces = [target.math(self.symbol)]
-        pieces += [target.math(x) for x in (self.formula, self.substituted) if x]
-        pieces.append(target.quantity(self.value, self.unit))
-        pieces += [target.quantity(value, unit) for value, unit in self.asked]
-        return pieces
+        """The pieces of the line in the target's math, symbol first, to be joined with ' = '."""
+        return [target.math(self.symbol)] + [" ".join(target.terms(p)) for p in self.pieces]
+
+
+@dataclass(frozen=True)
+class TableBlock:
+    title: str
+    columns: tuple[Column, ...]
+    rows: tuple[tuple, ...]        # cells: Quantity, str (text with $LaTeX$) or None
+    total: tuple | None = None
 
 
 @dataclass(frozen=True)
 class Solution:
     given: tuple[GivenLine, ...]
-    lines: tuple[WorkLine, ...]
+    blocks: tuple  # WorkLine | TableBlock, in order
+
+    @property
+    def lines(self) -> tuple[WorkLine, ...]:
+        return tuple(b for b in self.blocks if isinstance(b, WorkLine))
 
 
 def solution(variant) -> Solution:
-    return Solution(given_lines(variant), work_lines(variant))
+    values = values_of(variant)
+    plans = {}
+    for step in variant.steps:
+        if step.formula:
+            formula = _parse(variant, step.formula)
+            _check_names(variant, formula, values)
+            plans[step.name] = (formula, plan(formula, values[step.name], values))
+    in_si = used_in_si(plans, values)
+    hidden = set().union(*(i.hides for i in variant.inserts if isinstance(i, Table))) if variant.inserts else set()
+    answered = _answered(variant)
+    blocks, inserts = [], sorted(variant.inserts, key=lambda i: i.at)
+    for number, step in enumerate(variant.steps):
+        while inserts and inserts[0].at <= number:
+            blocks.append(_insert(inserts.pop(0), values))
+        if step.name in hidden and step.name not in answered:
+            continue
+        blocks.append(_line(variant, step, values, plans.get(step.name), in_si, answered))
+    blocks += [_insert(i, values) for i in inserts]
+    return Solution(given_lines(variant, in_si), tuple(blocks))
 
 
-def si_unit(unit: str) -> str | None:
-    """The SI unit a solver uses for a quantity printed in `unit`, or None if unknown."""
+def _parse(variant, latex: str) -> Formula:
     try:
-        return SI_UNITS.get(units.unit_info(unit).kind)
-    except ExgenError:
-        return None
+        return parse(latex)
+    except FormulaError as exc:
+        raise ExgenError(f"{variant.template.id}: cannot read the formula {latex!r}: {exc}") from None
 
 
-def given_lines(variant) -> tuple[GivenLine, ...]:
-    out = []
-    for p in variant.params:
-        si_text = None
-        target = si_unit(p.unit) if p.unit else None
-        if isinstance(p.si, (int, float)) and target is not None:
-            if abs(units.convert(1.0, p.unit, target) - 1.0) > 1e-12:
-                si_text = PLAIN.quantity(float(p.si), target)
-        out.append(GivenLine(p.name, p.label, p.symbol or default_symbol(p.name), str(p), si_text))
-    return tuple(out)
+def _check_names(variant, formula: Formula, values) -> None:
+    for slot in formula.slots:
+        if slot.name not in values:
+            raise ExgenError(f"{variant.template.id}: a formula refers to @{slot.name}, which is neither a step "
+                             f"nor a given")
 
 
-def _lookups(variant):
-    steps = {s.name: s for s in variant.steps}
-    params = {p.name: p for p in variant.params}
-
-    def symbol_of(name: str) -> str:
-        if name in steps:
-            return steps[name].symbol
-        if name in params:
-            return params[name].symbol or default_symbol(name)
-        return default_symbol(name)
-
-    def value_of(name: str):
-        if name in steps:
-            return steps[name].value
-        if name in params:
-            return params[name].si
-        raise ExgenError(f"{variant.template.id}: a formula refers to @{name}, which is neither a step nor a given")
-
-    return symbol_of, value_of
-
-
-def work_lines(variant) -> tuple[WorkLine, ...]:
-    symbol_of, value_of = _lookups(variant)
+def _answered(variant) -> dict[str, list[str]]:
     answered: dict[str, list[str]] = {}
     for part in variant.template.parts:
         for name in answer_type(part).steps(part):
             answered.setdefault(name, []).append(part.id)
-    lines = []
-    for step in variant.steps:
-        formula = expand(step.formula, symbol_of) if step.formula else ""
-        if formula.replace("\\,", "").replace(" ", "") == step.symbol.replace(" ", ""):
-            formula = ""  # "m_1 r_1 = m_1 r_1" says nothing
-        substituted = ""
-        if step.formula and PLACEHOLDER.search(step.formula) and not _ONLY_PLACEHOLDER.match(step.formula):
-            substituted = expand(step.formula, symbol_of, value_of, MARKDOWN.number)
-            if substituted == MARKDOWN.number(step.value):
-                substituted = ""
-        parts = tuple(answered.get(step.name, ()))
-        asked: list[tuple[Any, str]] = []
-        for part_id in parts:
-            answer = variant.answers[part_id]
-            for entry in answer_type(answer.part).worked_values(answer, step.name):
-                if entry[1] != step.unit and entry not in asked:
-                    asked.append(entry)
-        lines.append(WorkLine(step.name, step.symbol, formula, substituted, step.value, step.unit, step.note,
-                              parts, tuple(asked)))
-    return tuple(lines)
+    return answered
+
+
+def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
+    out = []
+    for p in variant.params:
+        si_text = None
+        target = si_unit(p.unit) if p.unit else None
+        if p.name in in_si and isinstance(p.si, (int, float)) and target is not None:
+            si_text = PLAIN.quantity(float(p.si), target)
+        out.append(GivenLine(p.name, p.label, p.symbol or default_symbol(p.name), str(p), si_text))
+    return tuple(out)
+
+
+def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
+    me = values[step.name]
+    formula = substituted = None
+    first_unit = me.shown
+    if planned:
+        parsed, plan = planned
+        if (me.kind == "angle" and not plan.angles_in_degrees) or (me.kind == "dimensional" and not plan.printed) \
+                or me.kind == "number":  # a ratio is worked as a fraction; a percentage follows it
+            first_unit = me.si
+        symbols = tuple(values[s.name].symbol for s in parsed.slots)
+        if step.symbolic and not _restates(parsed, symbols, step.symbol):
+            formula = Filled(parsed, symbols)
+        if parsed.slots and not (len(parsed.slots) == 1 and parsed.latex.strip() == "@" + parsed.slots[0].name):
+            substituted = _substituted(parsed, plan, values, step, first_unit)
+    shown = [Quantity(in_unit(step.value, step.unit, first_unit), first_unit)]
+    extra = [me.shown, me.si] if step.name in in_si or first_unit != me.shown else []
+    for part_id in answered.get(step.name, ()):
+        answer = variant.answers[part_id]
+        extra += [unit for _, unit in answer_type(answer.part).worked_values(answer, step.name)]
+    for unit in extra:
+        if isinstance(step.value, (int, float)) and not isinstance(step.value, bool) and unit and \
+                unit not in (q.unit for q in shown) and units.same_dimension(unit, step.unit or ""):
+            shown.append(Quantity(in_unit(step.value, step.unit, unit), unit))
+    if substituted is None and formula is not None and not formula.formula.slots:
+        formula = formula if _latex_of(formula) != MARKDOWN.number(step.value) else None
+    return WorkLine(step.name, step.symbol, formula, substituted, tuple(shown), step.note,
+                    tuple(answered.get(step.name, ())))
+
+
+def _restates(formula: Formula, symbols, symbol: str) -> bool:
+    """'m₁r₁ = m₁r₁' says nothing."""
+    def bare(latex: str) -> str:
+        return latex.replace("\\,", "").replace(" ", "").replace("{", "").replace("}", "")
+
+    return bare(write(formula, lambda s: symbols[s.index])) == bare(symbol)
+
+
+def _latex_of(filled: Filled) -> str:
+    return filled.latex(lambda n: MARKDOWN.number(n.value))
+
+
+def _substituted(formula: Formula, plan: Plan, values, step, first_unit: str) -> Filled:
+    """The formula with numbers, to as many figures as it takes to reproduce the line's value."""
+    def numbers(sig):
+        out = []
+        for slot, unit in zip(formula.slots, plan.units):
+            v = values[slot.name]
+            if v.exact is not None and unit == v.shown:
+                out.append(Number(float(v.exact), SIG, unit == "deg", v.exact))
+            else:
+                out.append(Number(in_unit(v.value, v.si, unit), sig, unit == "deg"))
+        return tuple(out)
+
+    if not isinstance(step.value, float):
+        return Filled(formula, numbers(SIG), True)
+    angle = kind(step.unit) == "angle"
+    expected = in_unit(step.value, step.unit, first_unit)
+    for sig in range(SIG, MAX_SIG + 1):
+        fills = numbers(sig)
+        got = line_value(Filled(formula, fills, True))
+        if got is None:
+            return Filled(formula, numbers(SIG), True)
+        if reproduces(in_unit(got, "rad", first_unit) if angle else got, expected):
+            return Filled(formula, fills, True)
+    return Filled(formula, numbers(SIG), True)
+
+
+def reproduces(got: float, shown: float, sig: int = SIG) -> bool:
+    """True if `got` is `shown` to within one unit in its last significant figure."""
+    if got == shown or (shown == 0 and abs(got) < 1e-9):  # a sum that cancels leaves float noise
+        return True
+    if not (math.isfinite(got) and math.isfinite(shown)):
+        return False
+    size = max(abs(shown), abs(got))
+    return abs(got - shown) <= 10.0 ** (math.floor(math.log10(size)) - sig + 1) * 1.0001
+
+
+def line_value(filled: Filled) -> float | None:
+    """What the substituted formula gives with its numbers as written (angles worked in radians), or
+    None when it is not plain arithmetic."""
+    try:
+        return evaluate(filled.formula, {i: shown_value(n) for i, n in enumerate(filled.fills)})
+    except (NotArithmetic, ArithmeticError, ValueError):
+        return None
+
+
+def shown_value(number: Number) -> float:
+    """A number's value as written (rounded as shown), in radians if written in degrees."""
+    if number.exact is not None:
+        value = float(number.exact)
+    else:
+        mantissa, exponent = number_parts(number.value, number.sig)
+        value = float(mantissa) * 10.0 ** int(exponent or 0)
+    return math.radians(value) if number.degrees else value
+
+
+def _insert(insert, values):
+    return TableBlock(insert.title, insert.columns, tuple(_row(r, insert.columns, values) for r in insert.rows),
+                      _row(insert.total, insert.columns, values) if insert.total else None)
+
+
+def _row(row, columns, values) -> tuple:
+    out = []
+    for cell, column in zip(row, columns):
+        if isinstance(cell, str) and cell.startswith("@") and cell[1:] in values:
+            cell = values[cell[1:]].value
+        if isinstance(cell, (int, float)) and not isinstance(cell, bool):
+            unit = "deg" if kind(column.unit) == "angle" else column.unit
+            cell = Quantity(in_unit(cell, column.unit, unit), unit)
+        out.append(cell)
+    return tuple(out)

@@ -7,8 +7,10 @@ from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
 
 from .. import units
+from .formula import terms, write
 from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_plain, text_to_typst
 from .unicode_math import latex_to_unicode
 
@@ -44,6 +46,23 @@ def _latex_of(value) -> str | None:
     return latex() if callable(latex) else None
 
 
+def _pieces(target, piece) -> list[str]:
+    """A member of a worked line as terms (a long line breaks between them): a symbol (LaTeX), a
+    Quantity, or a Filled formula."""
+    if isinstance(piece, str):
+        return [target.math(piece)]
+    if hasattr(piece, "formula"):
+        return target.formula_terms(piece)
+    return [target.quantity(piece.value, piece.unit)]
+
+
+def _latex_slot(target, number) -> str:
+    text = number.exact if number.exact is not None else target.number(number.value, number.sig)
+    if number.degrees:
+        text += target.DEGREE
+    return f"({text})" if text.startswith("-") else text
+
+
 class Markdown:
     """GitHub/Pandoc Markdown: math stays LaTeX between dollars."""
 
@@ -75,6 +94,21 @@ class Markdown:
 
     def prose(self, text: str) -> str:
         return escape_markdown(text)
+
+    DEGREE = r"^{\circ}"
+
+    def slot(self, number) -> str:
+        return _latex_slot(self, number)
+
+    def terms(self, piece) -> list[str]:
+        return _pieces(self, piece)
+
+    def formula_terms(self, filled) -> list[str]:
+        return terms(filled.latex(self.slot))
+
+    def equation(self, rows: list[list[str]]) -> str:
+        """A worked line as one line of inline math (Markdown viewers wrap it themselves)."""
+        return " ".join(piece for row in rows for piece in row)
 
 
 class Typst:
@@ -109,6 +143,47 @@ class Typst:
     def prose(self, text: str) -> str:
         return escape_typst(text)
 
+    def slot(self, number) -> str:
+        text = number.exact if number.exact is not None else self.number(number.value, number.sig)
+        if " " in text:
+            text = f"({text})"
+        if number.degrees:
+            text += "°"
+        return f"({text})" if text.startswith("-") else text
+
+    def terms(self, piece) -> list[str]:
+        return _pieces(self, piece)
+
+    def formula_terms(self, filled) -> list[str]:
+        """The formula's Typst, converted once per formula and set of symbols, then numbers filled in."""
+        marked = write(filled.formula, lambda slot: _marker(filled, slot), filled.numbers)
+        numbers = {str(i): self.slot(f) for i, f in enumerate(filled.fills) if not isinstance(f, str)}
+        return [_MARKER.sub(lambda m: numbers[m.group(1)], term) for term in _typst_terms(marked)]
+
+    def equation(self, rows: list[list[str]]) -> str:
+        """The body of a display equation: rows aligned at the first '=', a row that continues a long
+        right-hand side indented under it."""
+        out = []
+        for i, row in enumerate(rows):
+            if i == 0:
+                out.append(row[0] + (" &" + " ".join(row[1:]) if len(row) > 1 else ""))
+            else:
+                out.append(("&" if row[0].startswith("= ") else '&quad "" ') + " ".join(row))
+        return " \\\n  ".join(out)
+
+
+_MARKER = re.compile(r'"#(\d+)#"')
+
+
+def _marker(filled, slot) -> str:
+    fill = filled.fills[slot.index]
+    return fill if isinstance(fill, str) else rf"\text{{#{slot.index}#}}"
+
+
+@lru_cache(maxsize=8192)
+def _typst_terms(marked: str) -> tuple[str, ...]:
+    return tuple(latex_to_typst(term) for term in terms(marked))
+
 
 class Plain:
     """The terminal: Unicode, no markup."""
@@ -139,6 +214,20 @@ class Plain:
 
     def prose(self, text: str) -> str:
         return text
+
+    DEGREE = r"^{\circ}"
+
+    def slot(self, number) -> str:
+        return _latex_slot(MARKDOWN, number)
+
+    def terms(self, piece) -> list[str]:
+        return _pieces(self, piece)
+
+    def formula_terms(self, filled) -> list[str]:
+        return [latex_to_unicode(filled.latex(self.slot))]
+
+    def equation(self, rows: list[list[str]]) -> str:
+        return " ".join(piece for row in rows for piece in row)
 
 
 MARKDOWN, TYPST, PLAIN = Markdown(), Typst(), Plain()

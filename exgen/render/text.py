@@ -3,8 +3,9 @@ from __future__ import annotations
 
 import textwrap
 
+from .. import units
 from ..answertypes import answer_type
-from .solution import solution
+from .solution import TableBlock, solution
 from .targets import PLAIN
 
 WIDTH = 88
@@ -35,12 +36,42 @@ def variant_text(variant, key: bool = False) -> str:
         label = f"  ({PLAIN.text(g.label)})" if g.label else ""
         out.append(f"  {PLAIN.math(g.symbol)} = {g.printed}{si}{label}")
     out += ["", "Worked solution"]
-    for line in worked.lines:
-        marker = "  " + " ".join(f"({p})" for p in line.parts) if line.parts else ""
-        out.append("  " + " = ".join(line.chain(PLAIN)) + marker)
-        if line.note:
-            out.append(f"      {PLAIN.text(line.note)}")
+    for block in worked.blocks:
+        if isinstance(block, TableBlock):
+            out += table_text(block)
+        else:
+            marker = "  " + " ".join(f"({p})" for p in block.parts) if block.parts else ""
+            out.append("  " + " = ".join(block.chain(PLAIN)) + marker)
+            if block.note:
+                out.append(f"      {PLAIN.text(block.note)}")
     out += ["", "Answers"]
     for part in template.parts:
         out.append(f"  ({part.id}) {answer_type(part).key_text(variant.answers[part.id], PLAIN)}")
     return "\n".join(out)
+
+
+def table_text(table: TableBlock) -> list[str]:
+    """A table in fixed-width columns, numbers right-aligned."""
+    def cell(value) -> str:
+        if value is None:
+            return ""
+        if isinstance(value, str):
+            return PLAIN.text(value)
+        return PLAIN.number(value.value) if not isinstance(value.value, str) else value.value
+
+    head = []
+    for column in table.columns:
+        unit = units.pretty_unit("deg" if column.unit == "rad" else column.unit)
+        head.append(PLAIN.text(column.head) + (f" ({unit})" if unit else ""))
+    body = [[cell(c) for c in row] for row in table.rows]
+    if table.total:
+        body.append([cell(c) for c in table.total])
+    widths = [max(len(r[i]) for r in [head] + body) for i in range(len(head))]
+    rows = [head] + body
+    lines = [f"  {PLAIN.text(table.title)}"]
+    for k, row in enumerate(rows):
+        lines.append("    " + "  ".join(c.ljust(w) if i == 0 else c.rjust(w) for i, (c, w) in
+                                         enumerate(zip(row, widths))))
+        if k == 0 or (table.total and k == len(rows) - 2):
+            lines.append("    " + "  ".join("-" * w for w in widths))
+    return lines

@@ -98,7 +98,7 @@ class _Parser:
         if token == " ":
             return ""
         if token == "-":
-            return " − " if self.at > 1 else "−"
+            return "−" if self._unary() else " − "
         if token in ("+", "="):
             return f" {token} "
         if token == "'":
@@ -106,6 +106,16 @@ class _Parser:
         if not token.startswith("\\"):
             return token
         return self.command(token[1:])
+
+    def _unary(self) -> bool:
+        """A minus with no operand before it (at the start, after a bracket or an operator) is a sign."""
+        at = self.at - 2
+        while at >= 0 and self.tokens[at] == " ":
+            at -= 1
+        if at < 0:
+            return True
+        before = self.tokens[at]
+        return before in ("(", "{", "[", "=", "+", "-", "^", "_", ",", "\\times", "\\cdot", "\\left", "\\frac")
 
     def command(self, name: str) -> str:
         if name == "frac" or name in ("dfrac", "tfrac"):
@@ -129,7 +139,7 @@ class _Parser:
             return f" {SYMBOLS[name]} " if name in ("times", "le", "leq", "ge", "geq", "ne", "neq", "approx",
                                                      "pm", "to", "rightarrow") else SYMBOLS[name]
         if name in FUNCTIONS:
-            return self.function(name)
+            return " " + self.function(name)
         return name
 
     def function(self, name: str) -> str:
@@ -146,10 +156,12 @@ class _Parser:
 def _grouped(text: str) -> str:
     """Parenthesise a fraction part or root argument unless it is a single term."""
     text = text.strip()
-    return text if re.fullmatch(r"[\w.′⁰¹²³⁴⁵⁶⁷⁸⁹₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ]+", text) else f"({text})"
+    return text if re.fullmatch(r"[\w.′°⁰¹²³⁴⁵⁶⁷⁸⁹₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ]+", text) else f"({text})"
 
 
 def _script(text: str, table: dict, mark: str) -> str:
+    if text.strip() == "°":
+        return "°"
     compact = text.replace(" ", "").replace("−", "-")
     if compact and all(ch in table for ch in compact):
         return "".join(table[ch] for ch in compact)

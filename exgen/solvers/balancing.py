@@ -14,6 +14,20 @@ from .polygons import (APART, closing_angle, components, magnitude_formula, requ
                        require_polar_apart)
 
 PI = math.pi
+#: The course text's balancing table: a row per plane.
+PLANE = [("Plane",), ("$m$", "kg"), ("$r$", "m"), ("$l$", "m"), (r"$\theta$", "rad"), ("$m r$", "kg*m"),
+         ("$m r l$", "kg*m^2")]
+FORCE = [("Plane",), ("$m r$", "kg*m"), (r"$\theta$", "rad")]
+
+
+def _planes(tags, masses, radii, angles) -> list[list]:
+    """Rows of the plane table: tag, m, r, l, θ (a number for a plane on the 0° line), m r, m r l."""
+    return [[tag, f"@{m}", f"@{r}", f"@l{tag}", f"@{a}" if a else 0.0, f"@mr{tag}", f"@mrl{tag}"]
+            for tag, m, r, a in zip(tags, masses, radii, angles)]
+
+
+def _forces(tags, angles) -> list[list]:
+    return [[tag, f"@mr{tag}", f"@{a}" if a else 0.0] for tag, a in zip(tags, angles)]
 
 
 def static_balance(p, d):
@@ -21,8 +35,10 @@ def static_balance(p, d):
     masses = [(p.m1, p.r1, 0.0), (p.m2, p.r2, p.theta2), (p.m3, p.r3, p.theta3)]
     for i, (m, r, _) in enumerate(masses, start=1):
         d.step(f"mr{i}", m * r, "kg*m", symbol=rf"m_{i} r_{i}", formula=rf"@m{i}\,@r{i}")
+    rows = [[str(i), f"@m{i}", f"@r{i}", f"@theta{i}" if i > 1 else 0.0, f"@mr{i}"] for i in (1, 2, 3)]
     x, y = components(d, "F", "R", [("mr1", None), ("mr2", "theta2"), ("mr3", "theta3")],
-                      "kg*m", "the resultant m·r")
+                      "kg*m", "the resultant m·r",
+                      table=("The masses, resolved", [("Mass",)] + PLANE[1:3] + [PLANE[4], PLANE[5]], rows, "m r"))
     size = d.step("Bb", math.hypot(x, y), "kg*m", symbol=r"B\,b", formula=magnitude_formula("F_0", "F_90"),
                   note="the balancing m·r closes the force polygon")
     angle = closing_angle(d, "theta_b", r"\theta_b", "F_0", "F_90")
@@ -56,14 +72,18 @@ def two_plane_balance(p, d):
         rows.append((mr, l, getattr(p, f"theta{i}")))
     l_q = d.step("lQ", p.zQ - p.zP, "m", symbol=r"l_Q", formula=r"@zQ - @zP")
     mx, my = components(d, "M", "M", [(f"mrl{i}", f"theta{i}") for i in (1, 2, 3)], "kg*m^2",
-                        "moments about P")
+                        "moments about P", table=("Planes, with P as the reference: moments", PLANE,
+                                                  _planes("123", ("m1", "m2", "m3"), ("r1", "r2", "r3"),
+                                                          ("theta1", "theta2", "theta3")), "m r l"))
     m_q = d.step("mQ", math.hypot(mx, my) / (p.rQ * l_q), "kg", symbol=r"m_Q",
                  formula=rf"\frac{{{magnitude_formula('M_0', 'M_90')}}}{{@rQ\,@lQ}}",
                  note="Q's correction closes the moment polygon about P")
     closing_angle(d, "theta_Q", r"\theta_Q", "M_0", "M_90")
     d.step("mrQ", m_q * p.rQ, "kg*m", symbol=r"m_Q r_Q", formula=r"@mQ\,@rQ")
     fx, fy = components(d, "F", "F", [(f"mr{i}", f"theta{i}") for i in (1, 2, 3)] + [("mrQ", "theta_Q")],
-                        "kg*m", "forces, with Q's correction")
+                        "kg*m", "forces, with Q's correction",
+                        table=("Forces, with Q's correction", FORCE,
+                               _forces(["1", "2", "3", "Q"], ["theta1", "theta2", "theta3", "theta_Q"]), "m r"))
     d.step("mP", math.hypot(fx, fy) / p.rP, "kg", symbol=r"m_P",
            formula=rf"\frac{{{magnitude_formula('F_0', 'F_90')}}}{{@rP}}", note="P's correction closes the force polygon")
     closing_angle(d, "theta_P", r"\theta_P", "F_0", "F_90")
@@ -94,7 +114,9 @@ def complete_balance_position(p, d):
     mr_a, _ = _plane(d, "A", "mA", "rA", -p.lAB, r"-@lAB", FAR_SIDE)
     _plane(d, "C", "mC", "rC", p.lBC, r"@lBC")
     mx, my = components(d, "M", "M", [("mrlA", "thetaA"), ("mrlC", None)], "kg*m^2",
-                        "moments about B (angles from C)")
+                        "moments about B (angles from C)",
+                        table=("Planes, with B as the reference: moments", PLANE,
+                               _planes("AC", ("mA", "mC"), ("rA", "rC"), ("thetaA", None)), "m r l"))
     mrl_d = d.step("mrlD", math.hypot(mx, my), "kg*m^2", symbol=r"m_D r_D l_D",
                    formula=magnitude_formula("M_0", "M_90"), note="D closes the moment polygon")
     mr_d = d.step("mrD", p.mD * p.rD, "kg*m", symbol=r"m_D r_D", formula=r"@mD\,@rD")
@@ -102,7 +124,8 @@ def complete_balance_position(p, d):
     x = d.step("x", l_d - p.lBC, "m", formula=r"@lD - @lBC", note="from C to D")
     d.require(0.1 <= x <= 2.0, "plane D too close to C or too far away")
     theta_d = closing_angle(d, "theta_D", r"\theta_D", "M_0", "M_90")
-    fx, fy = components(d, "F", "F", [("mrA", "thetaA"), ("mrC", None), ("mrD", "theta_D")], "kg*m", "forces")
+    fx, fy = components(d, "F", "F", [("mrA", "thetaA"), ("mrC", None), ("mrD", "theta_D")], "kg*m", "forces",
+                        table=("Forces, with D", FORCE, _forces("ACD", ("thetaA", None, "theta_D")), "m r"))
     mr_b = d.step("mrB", math.hypot(fx, fy), "kg*m", symbol=r"m_B r_B", formula=magnitude_formula("F_0", "F_90"),
                   note="B closes the force polygon")
     theta_b = closing_angle(d, "theta_B", r"\theta_B", "F_0", "F_90")
@@ -131,11 +154,14 @@ def complete_balance_masses(p, d):
     _plane(d, "B", "mB", "rBC", p.lAB, r"@lAB")
     _plane(d, "C", "mC", "rBC", p.lAB + p.lBC, r"@lAB + @lBC")
     mx, my = components(d, "M", "M", [("mrlB", None), ("mrlC", "thetaC")], "kg*m^2",
-                        "moments about A (angles from B)")
+                        "moments about A (angles from B)",
+                        table=("Planes, with A as the reference: moments", PLANE,
+                               _planes("BC", ("mB", "mC"), ("rBC", "rBC"), (None, "thetaC")), "m r l"))
     mrl_d = d.step("mrlD", math.hypot(mx, my), "kg*m^2", symbol=r"m_D r_D l_D",
                    formula=magnitude_formula("M_0", "M_90"), note="D closes the moment polygon")
     theta_d = closing_angle(d, "theta_D", r"\theta_D", "M_0", "M_90")
-    fx, fy = components(d, "F", "F", [("mrB", None), ("mrC", "thetaC")], "kg*m", "forces of B and C")
+    fx, fy = components(d, "F", "F", [("mrB", None), ("mrC", "thetaC")], "kg*m", "forces of B and C",
+                        table=("Forces of B and C", FORCE, _forces("BC", (None, "thetaC")), "m r"))
     # A at θ_A and D at θ_D close the force polygon: resolve across each direction (Cramer's rule)
     across = math.sin(theta_d - p.thetaA)
     d.require(abs(across) > 0.2, "A and D nearly in line: their masses are ill-determined")
@@ -170,13 +196,18 @@ def bearing_reactions(p, d):
     _plane(d, "C", "mC", "rC", p.b + p.c + p.e, r"@b + @c + @e")
     l_y = d.step("lY", p.b + p.c, "m", symbol=r"l_Y", formula=r"@b + @c")
     mx, my = components(d, "M", "M", [("mrlA", None), ("mrlB", "thetaB"), ("mrlC", "thetaC")], "kg*m^2",
-                        "moments about X (angles from A)")
+                        "moments about X (angles from A)",
+                        table=("Planes, with bearing X as the reference: moments", PLANE,
+                               _planes("ABC", ("mA", "mB", "mC"), ("rA", "rB", "rC"), (None, "thetaB", "thetaC")),
+                               "m r l"))
     r_y = d.step("RY", math.hypot(mx, my) / l_y, "kg*m", symbol=r"R_Y",
                  formula=rf"\frac{{{magnitude_formula('M_0', 'M_90')}}}{{@lY}}",
                  note="the m·r that would balance the moments, in plane Y")
     closing_angle(d, "theta_RY", r"\theta_{R_Y}", "M_0", "M_90")
     fx, fy = components(d, "F", "F", [("mrA", None), ("mrB", "thetaB"), ("mrC", "thetaC"), ("RY", "theta_RY")],
-                        "kg*m", "forces, with Y's")
+                        "kg*m", "forces, with Y's",
+                        table=("Forces, with Y's", FORCE, _forces("ABC", (None, "thetaB", "thetaC")) +
+                               [["Y", "@RY", "@theta_RY"]], "m r"))
     r_x = d.step("RX", math.hypot(fx, fy), "kg*m", symbol=r"R_X", formula=magnitude_formula("F_0", "F_90"),
                  note="the m·r that would close the force polygon, in plane X")
     closing_angle(d, "theta_RX", r"\theta_{R_X}", "F_0", "F_90")
@@ -185,7 +216,7 @@ def bearing_reactions(p, d):
         force = d.step(f"F{tag}", mb.rotating_force(size, p.N), "N", symbol=f"F_{tag}", formula=rf"@R{tag}\,@N^2",
                        note=f"the dynamic force at {tag}")
         angle = d.step(f"theta_F{tag}", d.value_of(f"theta_R{tag}") + PI, "rad", symbol=rf"\theta_{{F_{tag}}}",
-                       formula=rf"@theta_R{tag} + \pi", note="on the bearing: opposite the balancing direction")
+                       formula=rf"@theta_R{tag} + 180^\circ", note="on the bearing: opposite the balancing direction")
         forces[tag] = (force, angle)
     _bearing_mistakes(p, d, forces)
 

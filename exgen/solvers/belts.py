@@ -27,7 +27,7 @@ def _open_contact_angle(p, d, r1, r2):
     small, large = ("r1", "r2") if r1 <= r2 else ("r2", "r1")
     alpha = d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad",
                    formula=rf"\sin^{{-1}}\frac{{@{large} - @{small}}}{{@X}}")
-    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"\pi - 2\,@alpha",
+    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"180^\circ - 2\,@alpha",
                    note="on the smaller pulley, which governs an open drive")
     d.mistake("theta", "crossed_formula", mb.contact_angle_crossed(r1, r2, p.X))
     d.mistake("theta", "larger_pulley", math.pi + 2 * alpha)
@@ -61,7 +61,8 @@ def belt_power(p, d):
     v = _belt_speed(p, d, r1)
     beta = None
     if "groove" in p:
-        beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle")
+        beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle",
+                      symbolic=False)
     ratio = _tension_ratio(p, d, theta, beta)
     flat_ratio = mb.tension_ratio(p.mu, theta)
     degree_ratio = math.exp(min(p.mu * math.degrees(theta) / (math.sin(beta) if beta else 1.0), 700))
@@ -69,7 +70,7 @@ def belt_power(p, d):
     # (c) inelastic belt, mass neglected
     t1 = d.step("T1", p.T_max, "N", formula=r"@T_max", note="the tight side carries the maximum tension")
     t2_light = d.step("T2_light", mb.slack_tension(t1, ratio), "N", symbol=r"T_2",
-                      formula=r"\frac{@T1}{@ratio}")
+                      formula=r"\frac{@T1}{@ratio}", note="the belt's mass neglected")
     p_light = d.step("P_light", mb.power(t1, t2_light, v), "W", symbol=r"P",
                      formula=r"(@T1 - @T2_light)\,@v")
     d.mistake("P_light", "theta_in_degrees", mb.power(t1, t1 / degree_ratio, v))
@@ -81,9 +82,9 @@ def belt_power(p, d):
     tc = d.step("Tc", mb.centrifugal_tension(p.m, v), "N", symbol=r"T_c", formula=r"@m\,@v^2")
     d.require(tc < t1 / 3, "centrifugal tension above a third of the maximum: past the maximum-power speed")
     d.require(tc > APART * t1, "centrifugal tension too small to matter")
-    t2 = d.step("T2", mb.slack_tension(t1, ratio, tc), "N", symbol=r"T_2",
-                formula=r"\frac{@T1 - @Tc}{@ratio} + @Tc")
-    p_heavy = d.step("P_heavy", mb.power(t1, t2, v), "W", symbol=r"P",
+    t2 = d.step("T2", mb.slack_tension(t1, ratio, tc), "N", symbol=r"T_2'",
+                formula=r"\frac{@T1 - @Tc}{@ratio} + @Tc", note="with centrifugal tension: primed values")
+    p_heavy = d.step("P_heavy", mb.power(t1, t2, v), "W", symbol=r"P'",
                      formula=r"(@T1 - @T2)\,@v")
     d.mistake("P_heavy", "centrifugal_ignored", p_light)
     d.mistake("P_heavy", "tc_not_subtracted", (t1 + tc) * (1 - 1 / ratio) * v)
@@ -93,7 +94,8 @@ def belt_power(p, d):
                    formula=r"1 - \frac{@T1 - @T2}{@A\,@E}")
     d.require_apart(1.0, creep, APART_FINE, "creep")
     v2 = d.step("v2", v * creep, "m/s", symbol=r"v_2", formula=r"@v\,@creep")
-    d.step("P_elastic", mb.power(t1, t2, v2), "W", symbol=r"P", formula=r"(@T1 - @T2)\,@v2")
+    d.step("P_elastic", mb.power(t1, t2, v2), "W", symbol=r"P''", formula=r"(@T1 - @T2)\,@v2",
+           note="the elastic belt delivers at the driven pulley's slower speed")
     d.mistake("P_elastic", "creep_ignored", p_heavy)
     d.mistake("P_elastic", "creep_added", (t1 - t2) * v * (2 - creep))
 
@@ -110,12 +112,12 @@ def driven_diameter(p, d):
     """Example 1.1: the driven pulley diameter for a wanted speed, with thickness and slip."""
     n = d.step("n", p.N2 / p.N1, "", symbol=r"\frac{N_2}{N_1}", formula=r"\frac{@N2}{@N1}")
     d.step("d2_plain", p.d1 / n, "m", symbol=r"d_2", formula=r"\frac{@d1}{@n}")
-    d.step("d2_thick", mb.driven_diameter(p.d1, n, p.t), "m", symbol=r"d_2",
-                   formula=r"\frac{@d1 + @t}{@n} - @t")
-    d.step("d2_slip", mb.driven_diameter(p.d1, n, 0.0, p.G), "m", symbol=r"d_2",
-                  formula=r"\frac{@d1\,(1 - @G)}{@n}")
-    both = d.step("d2_both", mb.driven_diameter(p.d1, n, p.t, p.G), "m", symbol=r"d_2",
-                  formula=r"\frac{(@d1 + @t)(1 - @G)}{@n} - @t")
+    d.step("d2_thick", mb.driven_diameter(p.d1, n, p.t), "m", symbol=r"d_{2,t}",
+           formula=r"\frac{@d1 + @t}{@n} - @t", note="with the belt's thickness")
+    d.step("d2_slip", mb.driven_diameter(p.d1, n, 0.0, p.G), "m", symbol=r"d_{2,s}",
+           formula=r"\frac{@d1\,(1 - @G)}{@n}", note="with slip")
+    both = d.step("d2_both", mb.driven_diameter(p.d1, n, p.t, p.G), "m", symbol=r"d_{2,ts}",
+                  formula=r"\frac{(@d1 + @t)(1 - @G)}{@n} - @t", note="with thickness and slip")
     d.require(both > 0, "driven pulley would have no size")
     d.require_apart(both, mb.driven_diameter(p.d1, n, 0.0, p.G), APART_FINE, "belt thickness")
     d.require_apart(both, mb.driven_diameter(p.d1, n, p.t), APART_FINE, "slip")
@@ -133,12 +135,12 @@ def driven_diameter(p, d):
 def driven_speed(p, d):
     """Example 1.2: the driven speed with slip on each pulley (G = G1 + G2) and belt thickness."""
     g = d.step("G", p.G1 + p.G2, "", symbol="G", formula=r"@G1 + @G2", note="slip on each pulley adds")
-    ideal = d.step("N2_ideal", p.N1 * p.d1 / p.d2, "rad/s", symbol=r"\omega_2",
+    ideal = d.step("N2_ideal", p.N1 * p.d1 / p.d2, "rad/s", symbol=r"\omega_2", shown="rpm",
                    formula=r"@N1\,\frac{@d1}{@d2}")
-    slipping = d.step("N2_slip", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, g), "rad/s", symbol=r"\omega_2",
-                      formula=r"@N1\,\frac{@d1}{@d2}\,(1 - @G)")
-    thick = d.step("N2_thick", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, g), "rad/s", symbol=r"\omega_2",
-                   formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)")
+    slipping = d.step("N2_slip", p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, g), "rad/s", symbol=r"\omega_{2,s}",
+                      shown="rpm", formula=r"@N1\,\frac{@d1}{@d2}\,(1 - @G)", note="with slip")
+    thick = d.step("N2_thick", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, g), "rad/s", symbol=r"\omega_{2,ts}",
+                   shown="rpm", formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)", note="with slip and thickness")
     d.require_apart(thick, slipping, APART_FINE, "belt thickness")
     d.mistake("N2_ideal", "ratio_inverted", p.N1 * p.d2 / p.d1)
     d.mistake("N2_slip", "ratio_inverted", p.N1 * p.d2 / p.d1 * (1 - g))
@@ -152,9 +154,9 @@ def driven_speed(p, d):
 
 def compound_drive(p, d):
     """Problem 1.4: motor -> main shaft -> countershaft, slip on each drive and belt thickness."""
-    main = d.step("N2", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, p.G), "rad/s", symbol=r"\omega_2",
+    main = d.step("N2", p.N1 * mb.speed_ratio(p.d1, p.d2, p.t, p.G), "rad/s", symbol=r"\omega_2", shown="rpm",
                   formula=r"@N1\,\frac{@d1 + @t}{@d2 + @t}\,(1 - @G)", note="main shaft")
-    d.step("N4", main * mb.speed_ratio(p.d3, p.d4, p.t, p.G), "rad/s", symbol=r"\omega_4",
+    d.step("N4", main * mb.speed_ratio(p.d3, p.d4, p.t, p.G), "rad/s", symbol=r"\omega_4", shown="rpm",
            formula=r"@N2\,\frac{@d3 + @t}{@d4 + @t}\,(1 - @G)",
            note="the pulley $d_3$ turns with the main shaft")
     d.require_apart(main, p.N1 * mb.speed_ratio(p.d1, p.d2, 0.0, p.G), APART_FINE, "belt thickness")
@@ -175,7 +177,7 @@ def drive_geometry(p, d):
     alpha_x = d.step("alpha_crossed", mb.alpha_crossed(r1, r2, p.X), "rad", symbol=r"\alpha_{\times}",
                      formula=r"\sin^{-1}\frac{@r1 + @r2}{@X}")
     d.step("theta_crossed", math.pi + 2 * alpha_x, "rad", symbol=r"\theta_{\times}",
-           formula=r"\pi + 2\,@alpha_crossed", note="the same on both pulleys of a crossed drive")
+           formula=r"180^\circ + 2\,@alpha_crossed", note="the same on both pulleys of a crossed drive")
     d.mistake("theta_crossed", "open_formula", theta_open)
     d.mistake("theta_crossed", "diameters_for_radii",
               math.pi + 2 * math.asin(min(1.0, (p.d1 + p.d2) / p.X)))
@@ -195,7 +197,7 @@ def max_power(p, d):
     theta = _open_contact_angle(p, d, r1, r2)
     ratio = _tension_ratio(p, d, theta)
     v = d.step("v_opt", mb.speed_for_max_power(p.T_max, p.m), "m/s", symbol=r"v_{\mathrm{opt}}",
-               formula=r"\sqrt{\frac{@T_max}{3\,@m}}", note="maximum power when T_c = T_max / 3")
+               formula=r"\sqrt{\frac{@T_max}{3\,@m}}", note=r"maximum power when $T_c = T_{\max}/3$")
     d.mistake("v_opt", "tc_equals_tmax", math.sqrt(p.T_max / p.m))
     d.mistake("v_opt", "tc_half", math.sqrt(p.T_max / (2 * p.m)))
     tc = d.step("Tc", p.m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v_opt^2")
@@ -212,15 +214,16 @@ def v_belt_count(p, d):
     """Problem 1.3: how many V-belts carry a duty, and the effect of an idler on the wrap."""
     d2 = d.step("d2", p.d2_max, "m", symbol=r"d_2", formula=r"@d2_max",
                 note="the largest allowed pulley keeps the belt speed up and the belt count down")
-    d1 = d.step("d1", d2 * p.N2 / p.N1, "m", symbol=r"d_1", formula=r"@d2\,\frac{@N2}{@N1}")
+    d1 = d.step("d1", d2 * p.N2 / p.N1, "m", symbol=r"d_1", formula=r"@d2\,\frac{@N2}{@N1}", shown="m")
     r1 = d.step("r1", d1 / 2, "m", formula=r"\frac{@d1}{2}")
     r2 = d.step("r2", d2 / 2, "m", formula=r"\frac{@d2}{2}")
     v = d.step("v", p.N1 * r1, "m/s", formula=r"@N1\,@r1")
     d.require(v <= p.v_max, "belt speed above the limit")
     alpha = d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad", formula=r"\sin^{-1}\frac{@r2 - @r1}{@X}")
-    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"\pi - 2\,@alpha",
+    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"180^\circ - 2\,@alpha",
                    note="on the smaller (motor) pulley")
-    beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle")
+    beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle",
+                      symbolic=False)
     t_max = d.step("T1", p.sigma * p.A, "N", symbol=r"T_1", formula=r"@sigma\,@A",
                    note="the allowable stress sets the tight-side tension")
     m = d.step("m", p.rho * p.A, "kg/m", formula=r"@rho\,@A")

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import engines as me
-from .polygons import APART, closing_angle, components, magnitude_formula, require_polar_apart
+from .polygons import APART, ZERO, closing_angle, components, magnitude_formula, require_polar_apart
 
 PI = math.pi
 #: Forces and couples that are exactly zero are graded within this (N, or N·m).
@@ -30,33 +30,58 @@ def _speed_and_ratio(d, p, radius_name: str):
     return n
 
 
-def _crank_polygons(d, p, names, positions, with_angles: bool = False, pitch_name: str = "a"):
-    """Primary and secondary forces and couples of in-line cranks at angle steps/params `names`;
-    with `with_angles`, each followed by the angle of the vector that balances it."""
-    unit = d.step("F1", p.m * p.r * p.N ** 2, "N", symbol=r"m r \omega^2", formula=r"@m\,@r\,@N^2",
-                  note="each crank's primary force")
+SYMBOLS_INLINE = {"Fp": r"F_{\mathrm{p}}", "Cp": r"C_{\mathrm{p}}", "Fs": r"F_{\mathrm{s}}", "Cs": r"C_{\mathrm{s}}"}
+
+
+def _clean(value: float) -> float:
+    """cos 90° is 6e-17 in floating point; a table shows 0."""
+    return 0.0 if abs(value) < 1e-12 else value
+
+
+def _crank_polygons(d, p, names, positions, with_angles: bool = False, fires=None):
+    """Primary and secondary forces and couples of in-line cranks at angle steps/params `names`, x the signed
+    distances from the centre plane. Every crank carries the same m r ω², so the text's table is worked in
+    units of it: Σ cos θ and Σ x cos θ (and sines, and 2θ for the secondary). With `with_angles`, each
+    result is followed by the angle of the vector that balances it; `fires` labels each crank's turn."""
+    d.step("F1", p.m * p.r * p.N ** 2, "N", symbol=r"m r \omega^2", formula=r"@m\,@r\,@N^2",
+           note="each crank's primary force")
     n = _speed_and_ratio(d, p, "r")
-    unit2 = d.step("F2", unit / n, "N", symbol=r"\frac{m r \omega^2}{n}", formula=r"\frac{@F1}{@n}",
-                   note="each crank's secondary force")
-    for i, x in enumerate(positions, start=1):
-        coef = x / getattr(p, pitch_name)
-        d.step(f"x{i}", x, "m", symbol=f"x_{i}", formula=rf"{coef:g}\,@{pitch_name}",
-               note="from the centre plane, positive towards the last cylinder" if i == 1 else "")
-        d.step(f"C{i}", unit * x, "N*m", symbol=rf"m r \omega^2 x_{i}", formula=rf"@F1\,@x{i}")
-        d.step(f"D{i}", unit2 * x, "N*m", symbol=rf"\frac{{m r \omega^2}}{{n}} x_{i}", formula=rf"@F2\,@x{i}")
-    count = len(names)
+    d.step("F2", d.value_of("F1") / n, "N", symbol=r"\frac{m r \omega^2}{n}", formula=r"\frac{@F1}{@n}",
+           note="each crank's secondary force")
     results = {}
-    for tag, size, harmonic, what in (("Fp", "F1", 1, "primary forces"), ("Cp", "C", 1, "primary couples"),
-                                      ("Fs", "F2", 2, "secondary forces"), ("Cs", "D", 2, "secondary couples")):
-        sizes = [size] * count if size.startswith("F") else [f"{size}{i}" for i in range(1, count + 1)]
-        x, y = components(d, tag, tag[0] + r"_{\mathrm{" + tag[1] + "}}", list(zip(sizes, names)),
-                          "N" if tag[0] == "F" else "N*m", what, harmonic)
-        symbol = {"Fp": r"F_{\mathrm{p}}", "Cp": r"C_{\mathrm{p}}", "Fs": r"F_{\mathrm{s}}", "Cs": r"C_{\mathrm{s}}"}[tag]
-        results[tag] = d.step(tag, math.hypot(x, y), "N" if tag[0] == "F" else "N*m", symbol=symbol,
-                              formula=magnitude_formula(f"{tag}_0", f"{tag}_90"),
-                              note=f"the largest unbalanced {what[:-1]}")
-        if with_angles:
-            closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", f"{tag}_0", f"{tag}_90")
+    for harmonic, label in ((1, "p"), (2, "s")):
+        k = "2" if harmonic == 2 else ""
+        angles = [harmonic * d.value_of(a) for a in names]
+        sums = {"c": [_clean(math.cos(a)) for a in angles], "s": [_clean(math.sin(a)) for a in angles]}
+        sums["xc"] = [x * c for x, c in zip(positions, sums["c"])]
+        sums["xs"] = [x * c for x, c in zip(positions, sums["s"])]
+        scale = {"c": len(names), "s": len(names), "xc": sum(map(abs, positions)), "xs": sum(map(abs, positions))}
+        for key, symbol, unit in (("c", rf"\Sigma\cos {k}\theta", ""), ("s", rf"\Sigma\sin {k}\theta", ""),
+                                  ("xc", rf"\Sigma x\cos {k}\theta", "m"), ("xs", rf"\Sigma x\sin {k}\theta", "m")):
+            total = sum(sums[key])
+            d.step(f"S{label}_{key}", 0.0 if abs(total) <= ZERO * scale[key] else total, unit, symbol=symbol)
+        head = [("Cylinder",)] + ([("Fires",)] if fires and harmonic == 1 else []) + \
+            ([("$x$", "m"), (r"$\theta$", "rad")] if harmonic == 1 else [(r"$2\theta$", "rad")])
+        rows = [[str(i)] + ([fires[i - 1]] if fires and harmonic == 1 else []) +
+                ([x, f"@{a}"] if harmonic == 1 else [2 * d.value_of(a)]) +
+                [sums["c"][i - 1], sums["s"][i - 1], sums["xc"][i - 1], sums["xs"][i - 1]]
+                for i, (x, a) in enumerate(zip(positions, names), start=1)]
+        head += [(rf"$\cos {k}\theta$",), (rf"$\sin {k}\theta$",), (rf"$x\cos {k}\theta$", "m"),
+                 (rf"$x\sin {k}\theta$", "m")]
+        title = ("Primary: cranks at θ" if harmonic == 1 else "Secondary: cranks at 2θ") + \
+            ", distances x from the centre plane"
+        d.table(title, head, rows, total=["Σ"] + [None] * (len(head) - 5) + [f"@S{label}_{key}" for key in
+                                                                            ("c", "s", "xc", "xs")])
+        size = "F1" if harmonic == 1 else "F2"
+        what = "primary" if harmonic == 1 else "secondary"
+        for tag, x_key, y_key, kind in ((f"F{label}", "c", "s", "force"), (f"C{label}", "xc", "xs", "couple")):
+            x_name, y_name = f"S{label}_{x_key}", f"S{label}_{y_key}"
+            results[tag] = d.step(tag, d.value_of(size) * math.hypot(d.value_of(x_name), d.value_of(y_name)),
+                                  "N" if kind == "force" else "N*m", symbol=SYMBOLS_INLINE[tag],
+                                  formula=rf"@{size}\sqrt{{@{x_name}^2 + @{y_name}^2}}",
+                                  note=f"the largest unbalanced {what} {kind}")
+            if with_angles:
+                closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", x_name, y_name)
     return results
 
 
@@ -112,7 +137,7 @@ def inline_engine_firing(p, d):
     order = me.parse_firing_order(p.firing)
     count, strokes = len(order), int(p.strokes)
     interval = d.step("delta", strokes * PI / count, "rad", symbol=r"\Delta\theta",
-                      formula=rf"\frac{{{strokes}\pi}}{{{count}}}",
+                      formula=rf"\frac{{{strokes * 180}^\circ}}{{{count}}}",
                       note=f"cranks of a {strokes}-stroke engine are {strokes * 180}°/N apart, in firing order")
     angles = me.crank_angles(order, strokes)
     for k, cylinder in enumerate(order):
@@ -122,7 +147,8 @@ def inline_engine_firing(p, d):
     names = [f"theta{i}" for i in range(1, count + 1)]
     ordered = [angles[i] for i in range(1, count + 1)]
     positions = me.centred_positions(count, p.a)
-    results = _crank_polygons(d, p, names, positions)
+    turn = {cylinder: _ordinal(k + 1) for k, cylinder in enumerate(order)}
+    results = _crank_polygons(d, p, names, positions, fires=[turn[i] for i in range(1, count + 1)])
     balanced = all(results[tag] <= ZERO_TOL for tag in ("Fp", "Cp", "Fs", "Cs"))
     d.step("verdict", "balanced" if balanced else "not balanced", "", symbol=r"\text{engine}",
            note="balanced only if all four polygons close")
@@ -144,17 +170,20 @@ def _ordinal(k: int) -> str:
 def inline_primary_balance(p, d):
     """Problem 2.1: outer cranks A and D given; the masses and angles of B and C for primary balance,
     then the largest secondary force."""
-    from .balancing import FAR_SIDE, _plane
+    from .balancing import FAR_SIDE, FORCE, PLANE, _forces, _plane, _planes
 
     for tag, value, formula, note in (("A", -p.lAB, r"-@lAB", FAR_SIDE), ("D", p.lBC + p.lCD, r"@lBC + @lCD", "")):
         _plane(d, tag, "m_out", "r", value, formula, note)
-    mx, my = components(d, "M", "M", [("mrlA", None), ("mrlD", "phi")], "kg*m^2", "moments about B (angles from A)")
+    mx, my = components(d, "M", "M", [("mrlA", None), ("mrlD", "phi")], "kg*m^2", "moments about B (angles from A)",
+                        table=("Cranks A and D, with B as the reference: moments", PLANE,
+                               _planes("AD", ("m_out", "m_out"), ("r", "r"), (None, "phi")), "m r l"))
     mrl_c = d.step("mrlC", math.hypot(mx, my), "kg*m^2", symbol=r"m_C r\,l_C", formula=magnitude_formula("M_0", "M_90"),
                    note="C closes the moment polygon about B")
     m_c = d.step("mC", mrl_c / (p.r * p.lBC), "kg", symbol=r"m_C", formula=r"\frac{@mrlC}{@r\,@lBC}")
     theta_c = closing_angle(d, "theta_C", r"\theta_C", "M_0", "M_90")
     d.step("mrC", m_c * p.r, "kg*m", symbol=r"m_C r", formula=r"@mC\,@r")
-    fx, fy = components(d, "F", "F", [("mrA", None), ("mrC", "theta_C"), ("mrD", "phi")], "kg*m", "primary forces")
+    fx, fy = components(d, "F", "F", [("mrA", None), ("mrC", "theta_C"), ("mrD", "phi")], "kg*m", "primary forces",
+                        table=("Primary forces, with C", FORCE, _forces("ACD", (None, "theta_C", "phi")), "m r"))
     m_b = d.step("mB", math.hypot(fx, fy) / p.r, "kg", symbol=r"m_B",
                  formula=rf"\frac{{{magnitude_formula('F_0', 'F_90')}}}{{@r}}", note="B closes the force polygon")
     theta_b = closing_angle(d, "theta_B", r"\theta_B", "F_0", "F_90")
@@ -164,8 +193,13 @@ def inline_primary_balance(p, d):
     k = d.step("k2", p.r * p.N ** 2 / n, "m/s^2", symbol=r"\frac{r \omega^2}{n}", formula=r"\frac{@r\,@N^2}{@n}")
     for tag, mass in (("A", "m_out"), ("B", "mB"), ("C", "mC"), ("D", "m_out")):
         d.step(f"S{tag}", d.value_of(mass) * k, "N", symbol=rf"m_{tag} \frac{{r \omega^2}}{{n}}", formula=rf"@{mass}\,@k2")
+    angles = {"A": 0.0, "B": d.value_of("theta_B"), "C": d.value_of("theta_C"), "D": p.phi}
     sx, sy = components(d, "Fs", r"F_{\mathrm{s}}", [("SA", None), ("SB", "theta_B"), ("SC", "theta_C"), ("SD", "phi")],
-                        "N", "secondary forces (cranks at 2θ)", 2)
+                        "N", "secondary forces (cranks at 2θ)", 2,
+                        table=("Secondary forces: cranks at 2θ", [("Crank",), ("$m$", "kg"), (r"$2\theta$", "rad"),
+                                                                  (r"$m\,r\omega^2/n$", "N")],
+                               [[tag, f"@{mass}", 2 * angles[tag], f"@S{tag}"] for tag, mass in
+                                (("A", "m_out"), ("B", "mB"), ("C", "mC"), ("D", "m_out"))], r"m\,r\omega^2/n"))
     secondary = d.step("Fs", math.hypot(sx, sy), "N", symbol=r"F_{\mathrm{s}}", formula=magnitude_formula("Fs_0", "Fs_90"),
                        note="the largest secondary unbalanced force")
     d.require(secondary >= 0.1 * (2 * p.m_out + m_b + m_c) * k, "secondary forces nearly balance: no direction to ask")
@@ -196,17 +230,13 @@ def _primary_balance_slips(p, d, right_c, right_b, right_s, n):
 
 
 CRANKS = (
-    ("P_dir", "Fc", "primary direct cranks, all along the crank", lambda a: 0.0),
-    ("P_rev", "Fc", "primary reverse cranks, at 2α", lambda a: 2 * a),
-    ("S_dir", "Fc2", "secondary direct cranks, at −α", lambda a: -a),
-    ("S_rev", "Fc2", "secondary reverse cranks, at 3α", lambda a: 3 * a),
+    ("P_dir", "Fc", "primary direct cranks", "Direct, $\\theta$", lambda a: 0.0),
+    ("P_rev", "Fc", "primary reverse cranks", "Reverse, $2\\alpha - \\theta$", lambda a: 2 * a),
+    ("S_dir", "Fc2", "secondary direct cranks", "2nd direct, $2\\theta - \\alpha$", lambda a: -a),
+    ("S_rev", "Fc2", "secondary reverse cranks", "2nd reverse, $3\\alpha - 2\\theta$", lambda a: 3 * a),
 )
 SYMBOLS = {"P_dir": r"F_{\mathrm{p,d}}", "P_rev": r"F_{\mathrm{p,r}}", "S_dir": r"F_{\mathrm{s,d}}",
            "S_rev": r"F_{\mathrm{s,r}}"}
-
-
-def _degrees(angles) -> str:
-    return ", ".join(f"{math.degrees(a) % 360:.0f}°" for a in angles)
 
 
 def _direct_reverse(p, d, alphas, factor_formulas):
@@ -222,11 +252,14 @@ def _direct_reverse(p, d, alphas, factor_formulas):
     sums = {key: found[long] for key, long in zip(("P_dir", "P_rev", "S_dir", "S_rev"),
                                                    ("primary_direct", "primary_reverse", "secondary_direct",
                                                     "secondary_reverse"))}
+    d.table(r"Crank positions with the crank on the reference line, $\theta = 0$; cylinder $i$'s line of stroke "
+            r"is at $\alpha_i$", [("Cylinder",), (r"$\alpha_i$", "rad")] + [(head, "rad") for *_, head, _ in CRANKS],
+            [[str(i), a] + [place(a) % (2 * math.pi) for *_, place in CRANKS] for i, a in enumerate(alphas, start=1)])
     out = {}
-    for key, crank, where, place in CRANKS:
+    for key, crank, where, _, place in CRANKS:
         d.step(f"k_{key}", sums[key][0], "", symbol=rf"k_{{\mathrm{{{key.replace('_', ',').lower()}}}}}",
                formula=factor_formulas.get(key, ""),
-               note=f"{where}: {_degrees(place(a) for a in alphas)}; the length of their resultant, in cranks")
+               note=f"the length of the resultant of the {where}, in cranks")
         out[key] = d.step(key, sums[key][0] * d.value_of(crank), "N", symbol=SYMBOLS[key],
                           formula=rf"@k_{key}\,@{crank}")
     return out, sums, r, n
@@ -267,7 +300,7 @@ def radial_engine(p, d):
 
 def v_engine(p, d):
     """Example 2.9: a two-cylinder V engine on one crank, by direct and reverse cranks."""
-    d.step("beta", p.V / 2, "rad", symbol=r"\beta", formula=r"\frac{@V}{2}",
+    d.step("beta", p.V / 2, "rad", symbol=r"\beta", formula=r"\frac{@V}{2}", symbolic=False,
            note="each line of stroke is β from the centre line")
     formulas = {"P_rev": r"2\left|\cos 2\,@beta\right|", "S_dir": r"2\left|\cos @beta\right|",
                 "S_rev": r"2\left|\cos 3\,@beta\right|"}

@@ -12,6 +12,7 @@ from __future__ import annotations
 from ..mechanics import gears as mg
 
 APART = 0.03
+MEMBERS = ("arm", "sun", "planet", "ring")
 SYMBOL = {"sun": r"\omega_S", "ring": r"\omega_R", "arm": r"\omega_A", "planet": r"\omega_P"}
 TEETH = {"sun": "@ts", "ring": "@tR", "planet": "@tp"}
 
@@ -60,15 +61,22 @@ def epicyclic(p, d):
     c_free = d.step("c_free", 1 + held[free], "", symbol=rf"n_{{{free[0].upper()}}}^{{(c)}}", formula=r"1 + @b_free")
     total = {"arm": 1.0, fixed: 0.0, "planet": c_planet, free: c_free}
     d.require(abs(c_free) > 0.05, "the free gear barely turns")
+    turns = {"(a) every member +1": {m: 1 for m in MEMBERS},
+             "(b) arm held": {"arm": 0, fixed: "@b_fixed", "planet": "@b_planet", free: "@b_free"},
+             "(c) = (a) + (b)": {"arm": 1, fixed: 0, "planet": "@c_planet", free: "@c_free"}}
+    d.table("The tabular method: turns of each member", [("Row",)] + [(m.capitalize(),) for m in MEMBERS],
+            [[row] + [cells[m] for m in MEMBERS] for row, cells in turns.items()],
+            shown=("b_fixed", "b_planet", "b_free"))
 
-    w_in = d.step("w_in", mg.signed(p.N_in, p.sense_in), "rad/s", symbol=SYMBOL[driver],
+    w_in = d.step("w_in", mg.signed(p.N_in, p.sense_in), "rad/s", symbol=SYMBOL[driver], shown="rpm",
                   note=f"the {driver} is driven; counter-clockwise positive")
     scale = w_in / total[driver]
     across = r"\frac{@w_in}{@c_free}" if driver != "arm" else r"@w_in"
-    out = d.step("N_out", scale * total[output], "rad/s", symbol=SYMBOL[output],
+    out = d.step("N_out", scale * total[output], "rad/s", symbol=SYMBOL[output], shown="rpm",
                  formula=(rf"{across}\,@c_free" if output != "arm" else across),
                  note="row (c) scaled so that the driver turns at its given speed")
-    planet = d.step("N_planet", scale * c_planet, "rad/s", symbol=SYMBOL["planet"], formula=rf"{across}\,@c_planet")
+    planet = d.step("N_planet", scale * c_planet, "rad/s", symbol=SYMBOL["planet"], formula=rf"{across}\,@c_planet",
+                    shown="rpm")
 
     speeds = {fixed: 0.0, driver: w_in, output: out}
     d.step("e_check", (speeds["ring"] - speeds["arm"]) / (speeds["sun"] - speeds["arm"]), "",

@@ -17,6 +17,13 @@ APART = 0.03        # a mistake at least this far from the answer (parts graded 
 APART_SMALL = 0.02  # for small effects that are still worth naming
 
 
+def _gravity(d) -> float:
+    """g as a step of its own, the first time a solution needs it, so formulas write g, not 9.81."""
+    if "g" not in d:
+        d.step("g", G, "m/s^2", symbol="g", note="standard gravity")
+    return G
+
+
 def _inertias(p, d):
     """Example 1.12: shaft inertias from mass and radius of gyration, referred to the motor."""
     i_m = d.step("I_M", p.mM * p.kM ** 2, "kg*m^2", formula=r"@mM\,@kM^2")
@@ -45,7 +52,8 @@ def hoist_torque(p, d):
     r_d, alpha_m = _motor_acceleration(p, d, n)
     tau1 = d.step("tau_M1", i_eq * alpha_m, "N*m", symbol=r"\tau_{M1}", formula=r"@I_EQ\,@alpha_M",
                   note="accelerates the inertias")
-    pull = d.step("F", mg.hanging_pull(p.M, p.a, G), "N", formula=r"@M\,(@a + 9.81)", note="rope pull on the hanging mass")
+    _gravity(d)
+    pull = d.step("F", mg.hanging_pull(p.M, p.a, G), "N", formula=r"@M\,(@a + @g)", note="rope pull on the hanging mass")
     tau_d = d.step("tau_D2", pull * r_d, "N*m", symbol=r"\tau_{D2}", formula=r"@F\,@r_D")
     tau2 = d.step("tau_M2", mg.referred_torque(tau_d, n, p.eta), "N*m", symbol=r"\tau_{M2}",
                   formula=r"\frac{@tau_D2\,@n}{@eta}", note="the load torque referred to the motor")
@@ -56,7 +64,7 @@ def hoist_torque(p, d):
     d.mistake("tau_M", "diameter_for_radius", tau1 + pull * p.dD * n / p.eta)
 
     pull_b = d.step("F_b", mg.incline_pull(p.M, p.a, G, p.slope, p.f), "N", symbol=r"F'",
-                    formula=r"@M\,@a + @f + @M\,(9.81)\sin @slope", note="hauled up the slope against friction instead")
+                    formula=r"@M\,@a + @f + @M\,@g \sin @slope", note="hauled up the slope against friction instead")
     tau_d_b = d.step("tau_D2b", pull_b * r_d, "N*m", symbol=r"\tau_{D2}'", formula=r"@F_b\,@r_D")
     tau2_b = d.step("tau_M2b", mg.referred_torque(tau_d_b, n, p.eta), "N*m", symbol=r"\tau_{M2}'",
                     formula=r"\frac{@tau_D2b\,@n}{@eta}")
@@ -93,8 +101,9 @@ def lift_counterweight(p, d):
                   formula=r"\frac{(@tau_M - @tau_M1)\,@eta^2}{@n}", note="what reaches the drum for the ropes")
     net = d.step("F_net", left / r_d, "N", symbol=r"\Delta T", formula=r"\frac{@tau_D2}{@r_D}",
                  note="the lift's rope tension less the counterweight's, $T_L - T_C$")
+    _gravity(d)
     mass = d.step("M2", (p.ml * (G + p.a) + p.R - net) / (G - p.a), "kg", symbol=r"M_2",
-                  formula=r"\frac{@ml\,(9.81 + @a) + @R - @F_net}{9.81 - @a}",
+                  formula=r"\frac{@ml\,(@g + @a) + @R - @F_net}{@g - @a}",
                   note=r"lift: $T_L = m_l(g + a) + R$; counterweight, accelerating down: $T_C = M_2(g - a)$")
     d.require(0.3 * p.ml <= mass <= p.ml, "a counterweight outside 30-100 % of the lift's mass")
 
@@ -116,7 +125,8 @@ def haulage_power(p, d):
     pull = d.step("F", p.tau_D / r_d, "N", formula=r"\frac{@tau_D}{@r_D}", note="rope pull from the drum torque")
     sine = d.step("sin_theta", 1 / p.s, "", symbol=r"\sin\theta", formula=r"\frac{1}{@s}",
                   note="a slope of 1 in s rises 1 for s along the slope")
-    d.step("M", (pull - p.f) / (p.a + G * sine), "kg", formula=r"\frac{@F - @f}{@a + 9.81\,@sin_theta}",
+    _gravity(d)
+    d.step("M", (pull - p.f) / (p.a + G * sine), "kg", formula=r"\frac{@F - @f}{@a + @g\,@sin_theta}",
            note=r"$F = M a + f + M g \sin\theta$")
     d.mistake("M", "diameter_for_radius", (p.tau_D / p.dD - p.f) / (p.a + G * sine))
     d.mistake("M", "weight_component_forgotten", (pull - p.f) / p.a)
@@ -160,10 +170,12 @@ def vehicle_gradient(p, d):
     wheel = d.step("tau_W", mg.available_torque(p.tau_E - tau1 - tau_f, n, p.eta), "N*m", symbol=r"\tau_W",
                    formula=r"\frac{(@tau_E - @tau_1 - @tau_f)\,@eta}{@n}", note="what reaches the wheels to drive the car")
     traction = d.step("F_T", wheel / p.r, "N", symbol=r"F_T", formula=r"\frac{@tau_W}{@r}")
+    _gravity(d)
     sine = d.step("sin_theta", (traction - p.m * p.a - p.R) / (p.m * G), "", symbol=r"\sin\theta",
-                  formula=r"\frac{@F_T - @m\,@a - @R}{@m\,(9.81)}", note=r"$F_T = m a + R + m g \sin\theta$")
+                  formula=r"\frac{@F_T - @m\,@a - @R}{@m\,@g}", note=r"$F_T = m a + R + m g \sin\theta$")
     d.require(-1 < sine < 1, "no such hill")
-    theta = d.step("theta", math.asin(sine), "rad", symbol=r"\theta", formula=r"\sin^{-1} @sin_theta")
+    theta = d.step("theta", math.asin(sine), "rad", symbol=r"\theta", formula=r"\sin^{-1} @sin_theta",
+                   symbolic=False)
     d.require(math.radians(1) <= theta <= math.radians(12), "not a road gradient (1-12 degrees)")
 
     def hill(tau_wheel):
@@ -198,8 +210,9 @@ def robot_arm(p, d):
     d.require_apart(i_eq, one_contact, APART_SMALL, "the second pair's efficiency")
     d.mistake("I_EQ", "arm_mass_forgotten", first + (p.I_G2 + p.I_G3) * n12 ** 2 / p.eta + p.I_G4 * n ** 2 / p.eta ** 2)
     weight = p.m * G * p.L
+    _gravity(d)
     hold = d.step("tau_g", weight * math.cos(p.theta) * n / p.eta ** 2, "N*m", symbol=r"\tau_{mg}",
-                  formula=r"\frac{@m\,(9.81)\,@L \cos @theta\,@n}{@eta^2}",
+                  formula=r"\frac{@m\,@g\,@L\,@n \cos @theta}{@eta^2}",
                   note="the arm's weight, referred to the motor through both pairs")
     d.mistake("tau_g", "efficiency_multiplied", weight * math.cos(p.theta) * n * p.eta ** 2)
     d.mistake("tau_g", "sin_for_cos", weight * math.sin(p.theta) * n / p.eta ** 2)

@@ -16,16 +16,21 @@ APART_DEG = 3.0
 ZERO = 1e-9
 
 
-def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic: int = 1):
+def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic: int = 1, table=None):
     """Steps `name_0` and `name_90`: Σ size·cos kθ and Σ size·sin kθ over terms (size name, angle name or
     None for a term on the 0° line), k the harmonic (2 for secondary cranks). Returns the two values;
-    float noise below 1e-9 of the terms' sizes is taken as zero."""
+    float noise below 1e-9 of the terms' sizes is taken as zero.
+
+    With `table` = (title, columns, rows, size), the sums are shown as the course text works them: a
+    table with a row per term (its given cells, then its two components) and the sums as its Σ row.
+    `size` is the LaTeX of the sized quantity (m r l), heading the component columns."""
     value = d.value_of
     angle = (lambda a: harmonic * value(a) if a else 0.0)
-    along = sum(value(s) * math.cos(angle(a)) for s, a in terms)
-    across = sum(value(s) * math.sin(angle(a)) for s, a in terms if a)
+    parts = [(value(s) * math.cos(angle(a)), value(s) * math.sin(angle(a)) if a else 0.0) for s, a in terms]
+    along, across = sum(p[0] for p in parts), sum(p[1] for p in parts)
     scale = sum(abs(value(s)) for s, _ in terms)
     along, across = (0.0 if abs(v) <= ZERO * scale else v for v in (along, across))
+    parts = [tuple(0.0 if abs(v) <= ZERO * scale else v for v in p) for p in parts]
     arg = (lambda a: rf"(2\,@{a})") if harmonic == 2 else (lambda a: f"@{a}")
     x = d.step(f"{name}_0", along, unit, symbol=_subscript(symbol, "0"),
                formula=" + ".join(rf"@{s} \cos {arg(a)}" if a else f"@{s}" for s, a in terms),
@@ -33,6 +38,12 @@ def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic:
     y = d.step(f"{name}_90", across, unit, symbol=_subscript(symbol, "90"),
                formula=" + ".join(rf"@{s} \sin {arg(a)}" for s, a in terms if a) or "0",
                note=f"{what}: components along the 90° line")
+    if table:
+        title, columns, rows, size = table
+        k = "2" if harmonic == 2 else ""
+        heads = [(rf"${size}\cos {k}\theta$", unit), (rf"${size}\sin {k}\theta$", unit)]
+        d.table(title, list(columns) + heads, [list(r) + list(p) for r, p in zip(rows, parts)],
+                total=["Σ"] + [None] * (len(columns) - 1) + [f"@{name}_0", f"@{name}_90"])
     return x, y
 
 
@@ -44,15 +55,18 @@ def _subscript(symbol: str, index: str) -> str:
 
 
 def closing_angle(d, name: str, symbol: str, x_name: str, y_name: str, opposite: bool = True) -> float:
-    """The angle of the vector that closes the polygon (opposite the resultant), or of the resultant."""
+    """The angle of the vector that closes the polygon (opposite the resultant), or of the resultant:
+    tan⁻¹(y/x) of the resultant's components, plus the 180° or 360° that puts it in its quadrant."""
     x, y = d.value_of(x_name), d.value_of(y_name)
-    if opposite:
-        angle = math.atan2(-y, -x) % (2 * math.pi)
-        return d.step(name, angle, "rad", symbol=symbol, formula=rf"\tan^{{-1}}\frac{{-@{y_name}}}{{-@{x_name}}}",
-                      note=r"opposite the resultant: in the quadrant of its negative components")
-    angle = math.atan2(y, x) % (2 * math.pi)
-    return d.step(name, angle, "rad", symbol=symbol, formula=rf"\tan^{{-1}}\frac{{@{y_name}}}{{@{x_name}}}",
-                  note="the resultant's direction: in the quadrant of its components")
+    angle = math.atan2(-y, -x) if opposite else math.atan2(y, x)
+    angle %= 2 * math.pi
+    note = "opposite the resultant" if opposite else "the resultant's direction"
+    if x == 0:
+        return d.step(name, angle, "rad", symbol=symbol, note=f"{note}: its components lie on the 90° line")
+    offset = round(math.degrees(angle - math.atan(y / x)) / 180) * 180
+    formula = rf"\tan^{{-1}}\frac{{@{y_name}}}{{@{x_name}}}" + (rf" + {offset}^\circ" if offset else "")
+    quadrant = f"{'−' if (x < 0) != opposite else '+'}x, {'−' if (y < 0) != opposite else '+'}y"
+    return d.step(name, angle, "rad", symbol=symbol, formula=formula, note=f"{note}, in the quadrant {quadrant}")
 
 
 def magnitude_formula(x_name: str, y_name: str) -> str:

@@ -1,0 +1,151 @@
+"""Worked solutions read like the course text's, in every key of every template.
+
+The rules a reader of a key checks by eye, checked by code over many draws: trigonometric
+arguments and angular positions in degrees; each shown line reproduces its shown value; one
+symbol stands for one value; no negative zeros; long lines break between terms, never inside a
+function's argument.
+"""
+import math
+import re
+
+import pytest
+
+from exgen.render.arithmetic import NotArithmetic, evaluate
+from exgen.render.equations import WIDTH, plan, term_width
+from exgen.render.formula import FormulaError, parse, terms, write
+from exgen.render.solution import line_value, reproduces, solution
+from exgen.render.working import in_unit as _in, kind as _kind
+from exgen.render.targets import MARKDOWN, PLAIN
+from exgen.variant import make_variant
+
+SEEDS = range(8)
+
+
+# ---- the formula parse -----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("latex, trig, exponent, inverse", [
+    (r"e^{@mu\,@theta / \sin @beta}", {"beta"}, {"mu", "theta", "beta"}, set()),
+    (r"\sin^{-1}\frac{@r2 - @r1}{@X}", set(), set(), {"r2", "r1", "X"}),
+    (r"@mrl1 \cos @theta1 + @mrl2 \cos 2\,@theta2", {"theta1", "theta2"}, set(), set()),
+    (r"\frac{@F_90 \cos @theta_D}{\sin(@theta_D - @thetaA)}", {"theta_D", "thetaA"}, set(), set()),
+    (r"\frac{(@r2 - @r1)^2}{@X}", set(), set(), set()),
+    (r"2\left|\cos 3\,@beta\right|", {"beta"}, set(), set()),
+])
+def test_slots_know_where_they_stand(latex, trig, exponent, inverse):
+    slots = parse(latex).slots
+    assert {s.name for s in slots if s.trig} == trig
+    assert {s.name for s in slots if s.exponent} == exponent
+    assert {s.name for s in slots if s.inverse} == inverse
+
+
+def test_numbers_stand_in_with_times_and_bracketed_trig_products():
+    formula = parse(r"@m\,(2\,@N)^2 \cos 2\,@beta + \frac{@a}{@b}\,(1 - @G)")
+    numbers = write(formula, lambda s: f"<{s.name}>", numbers=True)
+    assert numbers == r"<m> \times (2 \times <N>)^{2} \cos \left(2 \times <beta>\right) + \frac{<a>}{<b>}\,(1 - <G>)"
+    assert write(formula, lambda s: s.name) == r"m\,(2\,N)^{2} \cos 2\,beta + \frac{a}{b}\,(1 - G)"
+
+
+@pytest.mark.parametrize("latex, parts", [
+    (r"a \cos 30^{\circ} + b \sin (2 \times 40^{\circ}) - c", [r"a \cos 30^{\circ}", r"+ b \sin (2 \times 40^{\circ})", "- c"]),
+    (r"\left(-\frac{a}{b}\right)\left(-\frac{c}{d}\right)", [r"\left(-\frac{a}{b}\right)\left(-\frac{c}{d}\right)"]),
+    (r"-0.5 + (1 - x) \times 3^{-2}", ["-0.5", r"+ (1 - x) \times 3^{-2}"]),
+])
+def test_lines_break_only_between_top_level_terms(latex, parts):
+    assert terms(latex) == parts
+
+
+@pytest.mark.parametrize("latex, values, expected", [
+    (r"180^\circ - 2\,@a", [math.radians(5)], math.radians(170)),
+    (r"e^{@mu\,@theta / \sin @beta}", [0.3, 2.5, math.radians(30)], math.exp(0.3 * 2.5 / 0.5)),
+    (r"\sqrt{@x^2 + @y^2}", [3.0, -4.0], 5.0),
+    (r"\tan^{-1}\frac{@y}{@x} + 180^\circ", [1.0, 1.0], math.radians(225)),
+    (r"\left\lceil \frac{@P}{@Q} \right\rceil", [10.0, 3.0], 4.0),
+    (r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r2 - @r1)^2}{@X}", [0.25, 0.6, 3.6, 0.6, 0.25, 3.6], math.pi * 0.85 + 7.2 + 0.35 ** 2 / 3.6),
+    (r"(-1)^{3}\,\frac{@t1}{@t2}", [20, 40], -0.5),
+    (r"2\left|\cos 2\,@b\right|", [math.radians(60)], 1.0),
+])
+def test_a_formula_evaluates_with_its_numbers(latex, values, expected):
+    assert evaluate(parse(latex), dict(enumerate(values))) == pytest.approx(expected)
+
+
+def test_symbols_and_text_are_not_arithmetic():
+    with pytest.raises(NotArithmetic):
+        evaluate(parse(r"m r \omega^2"), {})
+    with pytest.raises(FormulaError):
+        parse(r"\frac{a}{b")
+
+
+def test_a_long_line_is_planned_in_rows_that_fit():
+    pieces = [["F_{0}"], [rf"+ m_{i} r_{i} \cos \theta_{i}" for i in range(1, 9)],
+              [rf"+ 0.{i}525 \cos (2 \times 1{i}0^{{\circ}})" for i in range(1, 9)], ["0.2065\\ \\text{kg·m}"]]
+    rows = plan(pieces)
+    assert len(rows) >= 3
+    for row in rows:
+        width = sum(term_width(t) for seg in row for t in pieces[seg.piece][seg.lo:seg.hi])
+        assert width <= WIDTH or len(row) == 1
+    assert rows[-1][-1].piece == 3 and rows[-1][-1].start
+    continued = [seg for row in rows for seg in row if not seg.start]
+    assert continued and all(seg.lo > 0 for seg in continued)
+
+
+# ---- every key of every template -----------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def keys(bank):
+    return [(variant, solution(variant)) for template in bank for variant in
+            (make_variant(template, seed) for seed in SEEDS)]
+
+
+def _substituted(keys):
+    for variant, worked in keys:
+        for line in worked.lines:
+            if line.substituted is not None:
+                yield variant, line
+
+
+def test_every_shown_line_reproduces_its_shown_value(keys):
+    for variant, line in _substituted(keys):
+        if not isinstance(line.value, float):
+            continue
+        got = line_value(line.substituted)
+        assert got is not None, (variant.template.id, line.name, "not arithmetic")
+        shown = line.values[0]
+        got = _in(got, "rad", shown.unit) if _kind(shown.unit) == "angle" else got
+        assert reproduces(got, shown.value), (variant.template.id, variant.seed, " = ".join(line.chain(PLAIN)))
+
+
+def test_trigonometric_arguments_are_in_degrees(keys):
+    for variant, line in _substituted(keys):
+        formula, fills = line.substituted.formula, line.substituted.fills
+        for slot in formula.slots:
+            if slot.trig and not slot.exponent and not isinstance(fills[slot.index], str):
+                name = (variant.template.id, line.name, slot.name)
+                kind = next((_kind(s.unit) for s in variant.steps if s.name == slot.name), None) or \
+                    _kind(next(p.unit for p in variant.params if p.name == slot.name))
+                assert kind != "angle" or fills[slot.index].degrees, name
+        text = " ".join(PLAIN.terms(line.substituted))
+        bare = re.search(r"(?<![⁻\w])(sin|cos|tan) ?\(?[−-]?\(?\d[\d.]*\)?(?![\d.]*(°| ×))", text)
+        assert not bare, (variant.template.id, text)
+
+
+def test_angular_positions_are_shown_in_degrees(keys):
+    for variant, worked in keys:
+        for line in worked.lines:
+            if _kind(next(s.unit for s in variant.steps if s.name == line.name)) == "angle":
+                assert "deg" in [q.unit for q in line.values], (variant.template.id, line.name)
+
+
+def test_one_symbol_stands_for_one_value(keys):
+    for variant, worked in keys:
+        seen = {g.symbol: g.printed for g in worked.given}
+        for line in worked.lines:
+            shown = MARKDOWN.number(line.value) if isinstance(line.value, float) else str(line.value)
+            assert seen.setdefault(line.symbol, shown) == shown, (variant.template.id, line.symbol)
+
+
+def test_no_negative_zero_and_no_raw_latex_in_plain_keys(keys):
+    for variant, worked in keys:
+        for line in worked.lines:
+            text = " = ".join(line.chain(PLAIN))
+            assert not re.search(r"(?<![\d.])[−-] ?0(?![.\d])", text), (variant.template.id, text)
+            assert not re.search(r"\\[A-Za-z]|[{}]", text), (variant.template.id, text)
