@@ -120,6 +120,13 @@ class Derivation:
         self._by_name[name] = step
         return value
 
+    def constant(self, name: str, value: float, unit: str, note: str = "", symbol: str | None = None) -> float:
+        """A constant (g) as a step of its own the first time a solution uses it, so that formulas
+        write @g and the key shows g = 9.81 m/s² once, not a bare 9.81 in the working."""
+        if name not in self._by_name:
+            self.step(name, value, unit, symbol=symbol, note=note)
+        return value
+
     def table(self, title: str, columns, rows, total=None, shown=()) -> Table:
         """Show steps and values as a table here, after the steps recorded so far (see Table)."""
         columns = tuple(c if isinstance(c, Column) else Column(*c) for c in columns)

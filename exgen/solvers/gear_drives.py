@@ -18,10 +18,7 @@ APART_SMALL = 0.02  # for small effects that are still worth naming
 
 
 def _gravity(d) -> float:
-    """g as a step of its own, the first time a solution needs it, so formulas write g, not 9.81."""
-    if "g" not in d:
-        d.step("g", G, "m/s^2", symbol="g", note="standard gravity")
-    return G
+    return d.constant("g", G, "m/s^2", note="standard gravity")
 
 
 def _inertias(p, d):

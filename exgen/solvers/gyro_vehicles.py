@@ -46,8 +46,9 @@ def _heel(p, d, momentum_name: str, apart: float):
     d.mistake("F_c", "kmh_not_converted", gy.centrifugal_force(p.m, p.v / KMH, p.R))
     cc = d.step("C_c", fc * p.h, "N*m", formula=r"@F_c\,@h", note="its overturning couple with the machine upright")
     d.mistake("C_c", "kmh_not_converted", gy.centrifugal_force(p.m, p.v / KMH, p.R) * p.h)
+    d.constant("g", gy.G, "m/s^2", note="standard gravity")
     theta = d.step("theta", math.atan2(gyro + cc, p.m * gy.G * p.h), "rad",
-                   formula=r"\tan^{-1}\frac{@C_g + @C_c}{@m\,g\,@h}",
+                   formula=r"\tan^{-1}\frac{@C_g + @C_c}{@m\,@g\,@h}",
                    note="both couples overturn outwards and scale with cos θ; the weight rights the machine "
                         "with m g h sin θ: (C_g + C_c) cos θ = m g h sin θ")
     d.mistake("theta", "gyro_ignored", math.atan2(cc, p.m * gy.G * p.h))
@@ -104,7 +105,8 @@ def motorcycle_heel(p, d):
 def car_wheel_reactions(p, d):
     """Problem 5.3: each wheel's reaction from the weight, the wheels' and engine's gyroscopic couples
     and the centrifugal couple; the overturning couples are shared equally by the two axles."""
-    weight = d.step("W", p.m * gy.G, "N", formula=r"@m\,g")
+    d.constant("g", gy.G, "m/s^2", note="standard gravity")
+    weight = d.step("W", p.m * gy.G, "N", formula=r"@m\,@g")
     front = d.step("W_f", weight * (p.b - p.a) / (2 * p.b), "N", symbol=r"W_{\mathrm{front}}",
                    formula=r"\frac{@W\,(@b - @a)}{2\,@b}", note="each front wheel's share of the weight")
     rear = d.step("W_r", weight * p.a / (2 * p.b), "N", symbol=r"W_{\mathrm{rear}}",
@@ -173,7 +175,8 @@ def rail_car_limiting_speed(p, d):
                       formula=r"\frac{@S}{@r\,@R}", note="the gyroscopic couple Σ(I G)(v/r)(v/R), per v²; "
                       + ("positive: it overturns outwards like the wheels" if sigma > 0
                          else "negative: it tilts the car inwards, against the centrifugal couple"))
-    wheel = d.step("W_i", p.m * gy.G / 4, "N", symbol=r"\frac{m g}{4}", formula=r"\frac{@m\,g}{4}",
+    d.constant("g", gy.G, "m/s^2", note="standard gravity")
+    wheel = d.step("W_i", p.m * gy.G / 4, "N", symbol=r"\frac{m g}{4}", formula=r"\frac{@m\,@g}{4}",
                    note="each inner wheel's share of the weight")
     v = d.step("v_max", math.sqrt(wheel * 2 * p.x / (per_v2 + per_v2_g)), "m/s", symbol=r"v_{\max}",
                formula=r"\sqrt{\frac{2\,@x\,@W_i}{@k_c + @k_g}}",

@@ -139,7 +139,8 @@ def rotor_bearing_reactions(p, d):
                 f"{effect}{' and lowers the stern' if effect == 'raises the bow' else ' and raises the stern'}")
     d.mistake("effect", "precession_reversed", other)
 
-    weight = d.step("W", p.m * gy.G, "N", formula=r"@m\,g")
+    d.constant("g", gy.G, "m/s^2", note="standard gravity")
+    weight = d.step("W", p.m * gy.G, "N", formula=r"@m\,@g")
     wa, wb = gy.weight_shares(weight, p.a, p.l)
     d.step("W_A", wa, "N", formula=r"\frac{@W\,(@l - @a)}{@l}", note="the weight's share at A (eq. 5.4)")
     d.step("W_B", wb, "N", formula=r"\frac{@W\,@a}{@l}", note="and at B (eq. 5.5)")
