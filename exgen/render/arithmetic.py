@@ -14,6 +14,7 @@ from .formula import (SPACE, Arg, Cmd, Delim, Formula, FormulaError, Group, Pare
 
 FUNCTIONS = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "cot": lambda x: 1 / math.tan(x),
              "sec": lambda x: 1 / math.cos(x), "csc": lambda x: 1 / math.sin(x), "cosec": lambda x: 1 / math.sin(x)}
+FUNCTIONS.update({"ln": math.log, "log": math.log10, "exp": math.exp})
 INVERSES = {"sin": math.asin, "cos": math.acos, "tan": math.atan, "arcsin": math.asin, "arccos": math.acos,
             "arctan": math.atan}
 _SKIP = {SPACE, Tok("cmd", ","), Tok("cmd", ";"), Tok("cmd", ":"), Tok("cmd", "!"), Tok("cmd", "quad"),

@@ -15,6 +15,8 @@ from functools import lru_cache
 _TOKEN = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)|\\([A-Za-z]+|.)|(\d+(?:\.\d+)?)|([{}^_])|(\s+)|(.)", re.DOTALL)
 TRIG = frozenset({"sin", "cos", "tan", "cot", "sec", "csc", "cosec"})
 INVERSE = frozenset({"arcsin", "arccos", "arctan"})
+#: Functions of a number, not of an angle.
+OTHER = frozenset({"ln", "log", "exp"})
 #: Commands whose one braced argument is text, kept as written.
 TEXT = frozenset({"text", "mathrm", "operatorname", "mathit", "mathbf", "textrm", "mbox"})
 SPACING = frozenset({",", ";", ":", "!", " ", "quad", "qquad"})
@@ -65,12 +67,17 @@ class Script:
 
 @dataclass(frozen=True)
 class Arg:
-    """The argument of a trigonometric function. `bracket`: more than one factor, so once numbers stand
-    in it, it is bracketed: cos 2θ reads cos(2 × 30°). `inverse`: the argument of sin⁻¹ and the like."""
+    """The argument of a function. `bracket`: more than one factor, so once numbers stand in it, it is
+    bracketed: cos 2θ reads cos(2 × 30°). `kind`: "trig" (an angle), "inverse" (the ratio of sin⁻¹ and
+    the like) or "other" (the number of ln)."""
 
     body: Group
     bracket: bool
-    inverse: bool
+    kind: str
+
+    @property
+    def inverse(self) -> bool:
+        return self.kind == "inverse"
 
 
 class FormulaError(ValueError):
@@ -183,7 +190,7 @@ def _delimiter(tok: Tok) -> str:
 
 def function_name(item) -> str | None:
     base = item.base if isinstance(item, Script) else item
-    if isinstance(base, Tok) and base.kind == "cmd" and (base.text in TRIG or base.text in INVERSE):
+    if isinstance(base, Tok) and base.kind == "cmd" and base.text in TRIG | INVERSE | OTHER:
         return base.text
     return None
 
@@ -224,8 +231,8 @@ def _with_arguments(items: list) -> tuple:
         body = [x for x in items[start:i] if x != SPACE]
         if not body:
             raise FormulaError(f"\\{function_name(item)} has no argument")
-        bracket = len(body) > 1
-        out.append(Arg(Group(tuple(items[start:i])), bracket, is_inverse(item)))
+        kind = "inverse" if is_inverse(item) else "other" if function_name(item) in OTHER else "trig"
+        out.append(Arg(Group(tuple(items[start:i])), len(body) > 1, kind))
     return tuple(out)
 
 
@@ -283,7 +290,7 @@ def _mark(node, slots, order, trig, exponent, inverse):
         for item in node.items:
             _mark(item, slots, order, trig, exponent, inverse)
     elif isinstance(node, Arg):
-        _mark(node.body, slots, order, trig or not node.inverse, exponent, inverse or node.inverse)
+        _mark(node.body, slots, order, trig or node.kind == "trig", exponent, inverse or node.inverse)
     elif isinstance(node, Script):
         _mark(node.base, slots, order, trig, exponent, inverse)
         if node.sub is not None:

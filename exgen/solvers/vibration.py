@@ -34,12 +34,14 @@ def periodic_time(d):
 
 def simple_pendulum(p, d):
     """A simple pendulum: ω_n = √(g/l), f_n, T_n, and the length that gives another period."""
-    d.step("omega_n", vb.pendulum_speed(p.l), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{g}{@l}}",
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
+    d.step("omega_n", vb.pendulum_speed(p.l), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@g}{@l}}",
            note="from m l² θ̈ + m g l θ = 0 (eq. 6.8)")
     d.step("f_n", vb.frequency(d.value_of("omega_n")), "Hz", symbol="f_n", formula=r"\frac{@omega_n}{2\pi}")
     d.mistake("f_n", "omega_for_f", d.value_of("omega_n"))
     periodic_time(d)
-    length = d.step("l_T", vb.pendulum_length(p.T), "m", symbol=r"l'", formula=r"g\left(\frac{@T}{2\pi}\right)^2",
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
+    length = d.step("l_T", vb.pendulum_length(p.T), "m", symbol=r"l'", formula=r"@g\left(\frac{@T}{2\pi}\right)^2",
                     note="T = 2π √(l/g) solved for l")
     d.mistake("l_T", "missing_2pi", vb.G * p.T ** 2)
     record(d, "l_T", "period_as_frequency", vb.G / (2 * math.pi * p.T) ** 2)
@@ -53,8 +55,9 @@ def compound_pendulum(p, d):
     i_o = d.step("I_O", vb.parallel_axis(i_g, p.m, p.h), "kg*m^2", symbol="I_O", formula=r"@I_G + @m\,@h^2",
                  note="about the knife edge: the parallel-axis theorem")
     d.mistake("I_O", "wrong_axis", i_g)
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
     omega = d.step("omega_n", vb.compound_pendulum_speed(p.m, p.h, i_o), "rad/s", symbol=r"\omega_n",
-                   formula=r"\sqrt{\frac{@m\,g\,@h}{@I_O}}", note="from I_O θ̈ + m g h θ = 0")
+                   formula=r"\sqrt{\frac{@m\,@g\,@h}{@I_O}}", note="from I_O θ̈ + m g h θ = 0")
     d.mistake("omega_n", "wrong_axis", vb.compound_pendulum_speed(p.m, p.h, i_g))
     d.step("f_n", vb.frequency(omega), "Hz", symbol="f_n", formula=r"\frac{@omega_n}{2\pi}")
     d.mistake("f_n", "omega_for_f", omega)
@@ -78,7 +81,8 @@ def spring_mass(p, d):
         k = d.step("K_eq", k_parallel, "N/m", symbol=r"K'", formula=r"@K1 + @K2",
                    note="in parallel the springs share one displacement: K' = K₁ + K₂")
         d.mistake("K_eq", "series_for_parallel", k_series)
-    delta = d.step("delta", p.m * vb.G / k, "m", symbol=r"\delta", formula=r"\frac{@m\,g}{@K_eq}",
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
+    delta = d.step("delta", p.m * vb.G / k, "m", symbol=r"\delta", formula=r"\frac{@m\,@g}{@K_eq}",
                    note="the static deflection under the weight, m g = K' δ")
     d.mistake("delta", "parallel_for_series" if series else "series_for_parallel",
               p.m * vb.G / (k_parallel if series else k_series))
@@ -153,6 +157,7 @@ def cantilever_end_mass(p, d):
     d.mistake("f_t", "omega_for_f", w_trans)
     d.mistake("f_t", "polar_for_bending", vb.frequency(vb.natural_speed(3 * p.E * vb.polar_second_moment(p.d) / p.l ** 3, p.m)))
     d.mistake("f_t", "simply_supported", vb.frequency(vb.natural_speed(48 * p.E * vb.second_moment(p.d) / p.l ** 3, p.m)))
-    d.step("delta_t", p.m * vb.G / s_trans, "m", symbol=r"\delta_t", formula=r"\frac{@m\,g}{@s_t}",
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
+    d.step("delta_t", p.m * vb.G / s_trans, "m", symbol=r"\delta_t", formula=r"\frac{@m\,@g}{@s_t}",
            note="the static deflection under the disc's weight; f_t = √(g/δ)/2π again")
     d.require(5 <= vb.frequency(w_trans) <= 200, "a transverse frequency outside 5-200 Hz")

@@ -63,8 +63,9 @@ def _equivalent_check(p, d):
            formula=r"\frac{@I_ADE}{@a^2}", note="check by the equivalent method at A")
     d.step("m_Meq", vb.referred(p.M, p.l, p.a), "kg", symbol=r"m'_M", formula=r"@M\left(\frac{@l}{@a}\right)^2")
     spring = d.step("K_eq", vb.referred(p.K, p.b, p.a), "N/m", symbol=r"K'", formula=r"@K\left(\frac{@b}{@a}\right)^2")
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
     pendulum = d.step("K_pend", vb.pendulum_stiffness(p.M, p.l, p.a), "N/m", symbol=r"K''",
-                      formula=r"\frac{@M\,g\,@l}{@a^2}", note="the pendulum's weight acts as a spring")
+                      formula=r"\frac{@M\,@g\,@l}{@a^2}", note="the pendulum's weight acts as a spring")
     d.step("K_T", spring + pendulum, "N/m", symbol=r"K_T", formula=r"@K_eq + @K_pend",
            note="ω_n = √(K_T/m_T) is the same as from Newton's law")
 
@@ -78,7 +79,8 @@ def damped_pendulum_lever(p, d):
     i_p = d.step("I_p", p.m_p * p.a ** 2, "kg*m^2", symbol=r"I_{m_p}", formula=r"@m_p\,@a^2")
     inertia = d.step("I_D", i_body + i_m + i_p, "kg*m^2", symbol=r"I_D", formula=r"@I_ADE + @I_M + @I_p",
                      note="everything turns about D")
-    q = d.step("q", p.K * p.b ** 2 + p.M * vb.G * p.l, "N*m", symbol="q", formula=r"@K\,@b^2 + @M\,g\,@l",
+    d.constant("g", vb.G, "m/s^2", note="standard gravity")
+    q = d.step("q", p.K * p.b ** 2 + p.M * vb.G * p.l, "N*m", symbol="q", formula=r"@K\,@b^2 + @M\,@g\,@l",
                note="moments about D for a small turn θ: the spring K (bθ) b and the weight M g l θ both restore")
     d.mistake("q", "pendulum_ignored", p.K * p.b ** 2)
     omega = d.step("omega_n", math.sqrt(q / inertia), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@q}{@I_D}}",
