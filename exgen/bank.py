@@ -16,6 +16,7 @@ from pathlib import Path
 import yaml
 
 from . import expr
+from .domains import domain_of, drawn_values, parse_domain
 from .answertypes import answer_type, names as answer_type_names
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .template import MistakeSpec, ParamSpec, PartSpec, Template
@@ -24,7 +25,7 @@ from .versions import data_digest
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure", "key_figures"}
-PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals"}
+PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
 MAX_VALUES = 100_000
 
@@ -192,7 +193,7 @@ class _Reader:
                 continue
             self.unknown_keys(spec, PARAM_KEYS, where)
             common = dict(name=name, unit=str(spec.get("unit", "")), label=str(spec.get("label", "")),
-                          symbol=str(spec.get("symbol", "")))
+                          symbol=str(spec.get("symbol", "")), domain=self.domain(spec.get("domain"), where))
             if "equals" in spec:
                 formula = self.derived(spec["equals"], {p.name for p in out if not _is_text(p)}, where + ("equals",))
                 if formula:
@@ -221,7 +222,23 @@ class _Reader:
                     self.error(where, f"more than {MAX_VALUES} values; use a coarser step")
                     continue
                 out.append(ParamSpec(**common, min=low, max=high, step=step))
+        for spec in out:  # what a template draws must make physical sense
+            outside = [v for v in drawn_values(spec) if v not in domain_of(spec)]
+            if outside:
+                self.error(("params", spec.name), f"draws {outside[0]:g}, outside its domain "
+                                                  f"{domain_of(spec).text()} (give `domain:` if that is wrong)")
         return tuple(out)
+
+    def domain(self, text, where) -> str:
+        """A declared `domain:` interval, checked now so a typo names its file and line."""
+        if text is None:
+            return ""
+        try:
+            parse_domain(str(text))
+        except ValueError as exc:
+            self.error(where + ("domain",), str(exc))
+            return ""
+        return str(text)
 
     def derived(self, formula, earlier: set, where) -> str:
         """An `equals:` expression over earlier numeric parameters (checked, not yet evaluated)."""

@@ -8,6 +8,7 @@ from __future__ import annotations
 from decimal import Decimal
 
 from . import units
+from .domains import PERCENT_UNITS, domain_of, drawn_values
 from .draw import derived_value, failed_requirement, si_values
 from .errors import ExgenError, QuantityError
 from .template import Template
@@ -59,8 +60,16 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
             value = reading.value if reading.unit is None else units.convert(reading.value, reading.unit, spec.unit)
         except (QuantityError, ExgenError) as exc:
             raise ExgenError(f"{spec.name}={text}: {exc}") from exc
+        domain = domain_of(spec)
+        if value not in domain:
+            requirement = domain.requirement(units.pretty_unit(spec.unit))
+            raise ExgenError(f"{spec.name}={text}: {_describe(spec)} {requirement}")
         values[spec.name] = _exact(value)
     return values
+
+
+def _describe(spec) -> str:
+    return f"{spec.name} ({spec.label})" if spec.label else spec.name
 
 
 def _derived(spec, values: dict, text: str | None) -> Decimal:
@@ -79,10 +88,26 @@ def _derived(spec, values: dict, text: str | None) -> Decimal:
     return value
 
 
+def percent_warnings(template: Template, given: dict[str, str], values: dict) -> list[str]:
+    """A bare number of at most 1 for a percentage the template draws above 1: a fraction meant as 90 %?"""
+    warnings = []
+    for spec in template.params:
+        drawn, value = drawn_values(spec), values.get(spec.name)
+        if spec.unit not in PERCENT_UNITS or spec.derived or not drawn or not isinstance(value, Decimal):
+            continue
+        typed = given.get(spec.name, "")
+        if value <= 1 < min(drawn) and units.parse_quantity(typed).unit is None:
+            warnings.append(f"{spec.name}={typed} is read as {typed} % (a bare number is read in %, and this "
+                            f"template draws {min(drawn):g} to {max(drawn):g} %); for the fraction write "
+                            f"{float(value) * 100:g}%")
+    return warnings
+
+
 def solve(template: Template, given: dict[str, str]) -> tuple[Variant, list[str]]:
     """The variant for the given values, and warnings for drawing constraints they break."""
     values = given_values(template, given)
     broken = failed_requirement(template, si_values(template, values))
-    warnings = [f"these values break the template's drawing constraint {broken!r}"] if broken else []
+    warnings = percent_warnings(template, given, values)
+    warnings += [f"these values break the template's drawing constraint {broken!r}"] if broken else []
     variant = build_variant(template, values, check=False)
     return variant, warnings + list(variant.warnings)

@@ -23,6 +23,7 @@ class ParamSpec:
     step: Decimal | None = None
     choices: tuple = ()
     equals: str = ""  # a given worked out from earlier ones (e.g. the loop that closes a cycle)
+    domain: str = ""  # the values that make physical sense, as an interval (exgen.domains); "" derives it
 
     @property
     def derived(self) -> bool:
