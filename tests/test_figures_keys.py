@@ -120,3 +120,11 @@ def test_bad_key_figures_are_reported_with_file_and_key(bank, tmp_path, value, m
     with pytest.raises(BankError) as caught:
         load_template(source)
     assert message in str(caught.value) and "key_figures" in str(caught.value)
+
+
+@pytest.mark.parametrize("value, nice", [(0.3, 0.2), (7.5, 5.0), (0.05, 0.05), (123.0, 100.0),
+                                         (0.001 * (1 - 1e-16), 0.001), (1e-3, 1e-3)])
+def test_scale_bars_have_round_lengths(value, nice):
+    from exgen.figures.polygons import _nice
+
+    assert _nice(value) == pytest.approx(nice)

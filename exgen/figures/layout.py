@@ -83,6 +83,8 @@ class TextBox:
         return [self.to_page(p) for p in ((self.x0, self.y0), (self.x1, self.y0), (self.x1, self.y1), (self.x0, self.y1))]
 
     def extent(self) -> tuple[float, float, float, float]:
+        if not self.angle:
+            return self.x0, self.y0, self.x1, self.y1
         xs, ys = zip(*self.corners())
         return min(xs), min(ys), max(xs), max(ys)
 

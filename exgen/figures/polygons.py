@@ -40,7 +40,7 @@ def side(variant, name: str, size: str, angle: str | None, factor: str | None = 
 def _nice(value: float) -> float:
     """1, 2 or 5 times a power of ten, at most `value`."""
     exponent = math.floor(math.log10(value))
-    return max(m * 10 ** exponent for m in (1, 2, 5) if m * 10 ** exponent <= value)
+    return max(m * 10.0 ** e for e in (exponent - 1, exponent) for m in (1, 2, 5) if m * 10.0 ** e <= value * (1 + 1e-9))
 
 
 def polygon(d: Drawing, x0: float, sides: list[Side], closing: Side, unit: str, conv: Convention) -> tuple[float, float]:

@@ -16,7 +16,7 @@ from .svg import FONT_SIZE, LINE, NOTE_SIZE, THIN, Drawing, on_circle, text_widt
 ROW = 16.0            # label line spacing
 DISC_H = 26.0         # half height of a disc seen edge-on
 SHAFT_H = 5.0         # half thickness of the shaft
-SPOKE_MAX = 58.0      # the longest arm in an end view
+SPOKE_MAX = 50.0      # the longest arm in an end view: its dot stays inside the sense arrow
 OUTLINE = 70.0        # end view outline radius
 CENTRE_DASH = "10 3 2 3"
 HIDDEN_DASH = "5 3"
@@ -90,8 +90,12 @@ def end_view(d: Drawing, c, spokes: Sequence[Spoke], conv: Convention, note: str
         d.line(c, tip, 2.2, cls=f"spoke spoke-{spoke.name}")
         dot = 5.0 if not (spoke.mass and heaviest) else 3.5 + 3.0 * math.sqrt(spoke.mass / heaviest)
         d.circle(tip, dot, fill="black", cls=f"mass mass-{spoke.name}")
-    label_at = on_circle(c, r - 14, conv.zero + sense * 0.55)
-    d.place([((label_at[0] + dx, label_at[1] + 5 + dy), "middle") for dx, dy in _NUDGES], "\u03b8",
+    candidates = [(on_circle(c, radius, conv.zero + sense * share), (dx, dy)) for radius in (r - 14, r - 24, r - 34)
+                  for share in (0.55, 0.3, 0.8) for dx, dy in _NUDGES[:5]]
+    candidates += [(on_circle(c, radius, conv.zero + sense * share), (0, 0)) for radius in (r - 10, r - 20, r - 30, r - 40)
+                   for share in (0.13, 0.26, 0.42, 0.68, 0.79, 0.92, 1.1)]
+    candidates += [(on_circle(c, OUTLINE + 9, conv.zero + sense * share), (0, 0)) for share in (0.5, 0.75, 1.0, 1.25)]
+    d.place([((x + dx, y + 5 + dy), "middle") for (x, y), (dx, dy) in candidates], "\u03b8",
             style="italic", cls="sense-label")
     if not on_zero:  # a spoke on the 0° line names it; otherwise the line is labelled
         _outside_label(d, c, OUTLINE + 22, conv.zero, conv.zero_label, "zero-label")
