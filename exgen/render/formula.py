@@ -112,7 +112,7 @@ class _Parser:
         return tok
 
     def sequence(self, stop=None) -> Group:
-        items, opened = [], []
+        items, opened, bars = [], [], []
         while True:
             tok = self.peek()
             if tok is None:
@@ -131,6 +131,14 @@ class _Parser:
                 base = items[-1] if isinstance(items[-1], Script) else Script(items[-1])
                 arg = self.argument()
                 items[-1] = Script(base.base, arg, base.sub) if tok.text == "^" else Script(base.base, base.sup, arg)
+                continue
+            if tok == Tok("char", "|"):  # |x|: a bare pair of bars in one group is an absolute value
+                self.take()
+                if bars:
+                    start = bars.pop()
+                    items[start:] = [Delim("|", Group(_with_arguments(items[start:])), "|")]
+                else:
+                    bars.append(len(items))
                 continue
             if tok == Tok("char", "(") or (tok == Tok("char", ")") and opened):
                 self.take()

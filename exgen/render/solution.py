@@ -235,13 +235,17 @@ def _substituted(formula: Formula, plan: Plan, values, step, first_unit: str) ->
         got = line_value(Filled(formula, fills, True))
         if got is None:
             return Filled(formula, numbers(SIG), True)
-        if reproduces(in_unit(got, "rad", first_unit) if angle else got, expected):
+        turn = in_unit(2 * math.pi, "rad", first_unit) if angle else 0.0
+        if reproduces(in_unit(got, "rad", first_unit) if angle else got, expected, turn=turn):
             return Filled(formula, fills, True)
     return Filled(formula, numbers(SIG), True)
 
 
-def reproduces(got: float, shown: float, sig: int = SIG) -> bool:
-    """True if `got` is `shown` to within one unit in its last significant figure."""
+def reproduces(got: float, shown: float, sig: int = SIG, turn: float = 0.0) -> bool:
+    """True if `got` is `shown` to within one unit in its last significant figure. For an angle, `turn` is
+    a whole turn in its unit (360 or 2π): whole turns between the two do not count (−117.7° is 242.3°)."""
+    if turn:
+        got = shown + math.remainder(got - shown, turn)
     if got == shown or (shown == 0 and abs(got) < 1e-9):  # a sum that cancels leaves float noise
         return True
     if not (math.isfinite(got) and math.isfinite(shown)):

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import linkages as lk
+from .angles import direction_formula
 from .polygons import APART, angle_gap_deg, require_angle_apart
 
 #: The transmission angle is kept in this window: nearer a dead point the answers turn on the
@@ -100,7 +101,8 @@ def coupler_point(p, d):
     xb = d.step("xB", p.xA + p.L2 * math.cos(p.theta2), "m", symbol="x_B", formula=r"@xA + @L2\cos @theta2",
                 note="R_H = R_1 + R_2, from D to the crank pin B")
     yb = d.step("yB", p.yA + p.L2 * math.sin(p.theta2), "m", symbol="y_B", formula=r"@yA + @L2\sin @theta2")
-    theta_h = d.step("theta_H", math.atan2(yb, xb), "rad", symbol=r"\theta_H", formula=r"\tan^{-1}\frac{@yB}{@xB}",
+    theta_h = d.step("theta_H", math.atan2(yb, xb), "rad", symbol=r"\theta_H",
+                     formula=direction_formula("@yB", "@xB", yb, xb, math.atan2(yb, xb)),
                      note="the direction D → B, in the quadrant of its components")
     r_h = d.step("r_H", math.hypot(xb, yb), "m", symbol="r_H", formula=r"\sqrt{@xB^2 + @yB^2}")
     phi = d.step("phi", lk.cosine_law_angle(r_h, p.L4, p.L3), "rad", symbol=r"\varphi",
@@ -114,7 +116,7 @@ def coupler_point(p, d):
     xc = d.step("xC", p.L4 * math.cos(theta4), "m", symbol="x_C", formula=r"@L4\cos @theta4")
     yc = d.step("yC", p.L4 * math.sin(theta4), "m", symbol="y_C", formula=r"@L4\sin @theta4")
     theta3 = d.step("theta3", math.atan2(yc - yb, xc - xb), "rad", symbol=r"\theta_3",
-                    formula=r"\tan^{-1}\frac{@yC - @yB}{@xC - @xB}",
+                    formula=direction_formula("@yC - @yB", "@xC - @xB", yc - yb, xc - xb, math.atan2(yc - yb, xc - xb)),
                     note="the coupler B → C from the loop R_4 = R_H + R_3 (the text's loop takes R_3 from C to B, 180° round)")
     alpha = d.step("alpha", lk.cosine_law_angle(p.CP, p.L3, p.BP), "rad", symbol=r"\alpha",
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",

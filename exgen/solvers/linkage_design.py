@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import linkages as lk
+from .angles import direction_formula
 from .fourbars import GRASHOF_REASON
 from .polygons import APART, angle_gap_deg, require_angle_apart
 
@@ -28,7 +29,8 @@ def actuator_swing(p, d):
     """
     ao = d.step("AO", math.hypot(p.xO, p.yO), "m", symbol="AO", formula=r"\sqrt{@xO^2 + @yO^2}",
                 note="between the link's pivot A and the actuator's pivot O")
-    beta = d.step("beta", math.atan2(p.yO, p.xO), "rad", symbol=r"\beta", formula=r"\tan^{-1}\frac{@yO}{@xO}",
+    beta = d.step("beta", math.atan2(p.yO, p.xO), "rad", symbol=r"\beta",
+                  formula=direction_formula("@yO", "@xO", p.yO, p.xO, math.atan2(p.yO, p.xO)),
                   note="the direction A → O, in the quadrant of its components")
     turn = 1.0 if str(p.side) == "left" else -1.0
     sign = "+" if turn > 0 else "-"

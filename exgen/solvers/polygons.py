@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from .angles import direction_formula
+
 #: How far a known wrong method must land from the right answer for a sheet to test it: sizes
 #: are graded at 1 % and angles at 1°, so 3 % and 3° leave a clear gap.
 APART = 0.03
@@ -63,8 +65,7 @@ def closing_angle(d, name: str, symbol: str, x_name: str, y_name: str, opposite:
     note = "opposite the resultant" if opposite else "the resultant's direction"
     if x == 0:
         return d.step(name, angle, "rad", symbol=symbol, note=f"{note}: its components lie on the 90° line")
-    offset = round(math.degrees(angle - math.atan(y / x)) / 180) * 180
-    formula = rf"\tan^{{-1}}\frac{{@{y_name}}}{{@{x_name}}}" + (rf" + {offset}^\circ" if offset else "")
+    formula = direction_formula(f"@{y_name}", f"@{x_name}", y, x, angle)
     quadrant = f"{'−' if (x < 0) != opposite else '+'}x, {'−' if (y < 0) != opposite else '+'}y"
     return d.step(name, angle, "rad", symbol=symbol, formula=formula, note=f"{note}, in the quadrant {quadrant}")
 

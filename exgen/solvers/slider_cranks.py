@@ -61,7 +61,9 @@ def slider_crank(p, d):
         d.step("gamma", gamma, "rad", symbol=r"\gamma", formula=r"180^\circ - (@theta2 + @theta3)",
                note="eq 7.12: the angle ABC between crank and coupler")
     else:
-        d.step("gamma", gamma, "rad", symbol=r"\gamma", formula=r"|@theta2 + 180^\circ - @phi3|",
+        turns = round((math.pi + p.theta2 - phi3) / (2 * math.pi))  # whole turns taken off to land within ±180°
+        less = "" if turns == 0 else (rf" - {360 * turns}^\circ" if turns > 0 else rf" + {-360 * turns}^\circ")
+        d.step("gamma", gamma, "rad", symbol=r"\gamma", formula=rf"|@theta2 + 180^\circ - @phi3{less}|",
                note="the angle ABC between crank (B → A at θ2 + 180°) and coupler, taken between 0° and 180°")
     ux, uy = TOWARDS[where]
     cx = p.L1 if slide == "vertical" else ux * l4
