@@ -11,8 +11,12 @@ from .. import units
 from ..answertypes import answer_type
 from .equations import line_pieces, plan
 from .solution import TableBlock, WorkLine, solution
+from .targets import PLAIN
 
 _SVG_TITLE = re.compile(r"<title>(.*?)</title>", re.DOTALL)
+_SVG_BOX = re.compile(r'viewBox="[-\d.]+ [-\d.]+ ([\d.]+) ([\d.]+)"')
+#: A4 less the margins, in mm: the text block a question must fit, and its width.
+PAGE_HEIGHT, PAGE_WIDTH = 297 - 20 - 24, 210 - 44
 
 
 def marks(value: float) -> str:
@@ -22,6 +26,17 @@ def marks(value: float) -> str:
 
 def plural(value: float, word: str = "mark") -> str:
     return f"{marks(value)} {word}{'' if value == 1 else 's'}"
+
+
+def surely_fits(statement: str, svg: str | None, asks: list[str]) -> bool:
+    """Whether a question's heading, statement, figure and parts surely fit on one page: a generous
+    estimate, so that the layout measures only the questions that might not."""
+    lines = sum(len(p) // 90 + 1 for p in statement.split("\n\n")) + sum(len(a) // 70 + 1 for a in asks)
+    height = 14 + 5.2 * lines + 2.5 * len(asks)  # heading, lines of text, gaps between parts
+    box = _SVG_BOX.search(svg or "")
+    if box:
+        height += 0.88 * PAGE_WIDTH * float(box.group(2)) / float(box.group(1)) + 12  # figure and caption
+    return height <= 0.8 * PAGE_HEIGHT
 
 
 def figure_caption(number: int, svg: str | None) -> str:
@@ -72,6 +87,7 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
         "figure": figure,
         "caption": target.prose(figure_caption(question.number, svg)),
         "parts": parts,
+        "fits": surely_fits(PLAIN.text(v.statement), svg if figure else None, [PLAIN.text(v.asks[p.id]) for p in v.template.parts]),
     }
     if key:
         context.update(key_context(v, target, key_figures))

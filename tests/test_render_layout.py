@@ -1,0 +1,84 @@
+"""Page layout of sheets and keys, read from where Typst actually placed things.
+
+A question's heading, statement, figure and parts stay on one page when they fit on one; a table
+never leaves its header alone at a page's foot and repeats it on the next page; a heading never
+ends a page. The layouts leave invisible marks (metadata with the page they landed on) that
+`typst.query` reads back from the laid-out document.
+"""
+import json
+from pathlib import Path
+
+import pytest
+import typst
+
+from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet, load_assignment
+from exgen.figures.metrics import FAMILY
+from exgen.render.jinja import render
+from exgen.render.pdf import key_typst, sheet_typst
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+def marks(source: str, label: str) -> list[dict]:
+    return json.loads(typst.query(source.encode("utf-8"), f"<{label}>", field="value"))
+
+
+@pytest.fixture(scope="module")
+def documents(bank):
+    out = []
+    for name in ("tutorial1.yaml", "tutorial2.yaml"):
+        assignment = load_assignment(EXAMPLES / name, bank)
+        for student in (Student("A21001", "Nur Aisyah binti Rahman"), Student("A21002", "Lim Wei Jie")):
+            sheet = build_sheet(assignment, student, bank, b"layout" * 6)
+            out += [(f"{name} {student.id} sheet", sheet_typst(sheet)), (f"{name} {student.id} key", key_typst(sheet))]
+    # questions the layout measures (their size is not surely below a page before typesetting)
+    tall = ("gears.robot_arm", "linkages.coupler_point", "gears.lift_counterweight")
+    assignment = Assignment(id="tall", title="Tall questions", questions=tuple(
+        QuestionSpec(f"q{i}", t) for i, t in enumerate(tall, start=1)))
+    sheet = build_sheet(assignment, Student("A21003"), bank, b"layout" * 6)
+    return out + [("tall sheet", sheet_typst(sheet)), ("tall key", key_typst(sheet))]
+
+
+def test_a_question_that_fits_on_a_page_is_never_split(documents):
+    for name, source in documents:
+        placed: dict[int, dict[str, tuple[int, bool]]] = {}
+        for mark in marks(source, "exgen-layout"):
+            placed.setdefault(mark["question"], {})[mark["what"]] = (mark["page"], mark["fits"])
+        assert placed, name
+        for question, where in placed.items():
+            (start, fits), (end, _) = where["start"], where["end"]
+            assert fits, (name, question, "a question taller than a page")
+            assert start == end, (name, question, f"starts on page {start}, ends on page {end}")
+
+
+@pytest.fixture(scope="module")
+def preamble():
+    """The key's preamble and definitions, without a sheet."""
+    context = {"doc_title": "t", "doc_author": "a", "closing": "", "footer_left": "", "font": FAMILY, "course": "",
+               "title": "", "student_name": "", "student_id": "", "code": "", "due": "", "assignment_id": "",
+               "total": "", "instructions": "", "questions": []}
+    return render("key.typ.j2", context).split("\n#sheet-header")[0] + "\n"
+
+
+def _mark(name: str) -> str:
+    return f'#context [#metadata((name: "{name}", page: here().page())) <probe>]'
+
+
+@pytest.mark.parametrize("gap", [560, 620, 650, 665, 680, 700])
+def test_a_table_keeps_its_header_with_a_row_and_repeats_it(preamble, gap):
+    rows = ", ".join(f"([{_mark(f'row{i}')}{i}], [1], [2])" for i in range(40))
+    source = preamble + f'#v({gap}pt)\n#work-table([{_mark("title")}Planes], ([{_mark("head")}A], [B], [C]), ' \
+                        f'({rows},), none)\n'
+    found = marks(source, "probe")
+    page = {m["name"]: m["page"] for m in found}
+    heads = sorted(m["page"] for m in found if m["name"] == "head")
+    assert page["title"] == heads[0] == page["row0"]  # no title or header alone at a foot
+    last = max(m["page"] for m in found if m["name"].startswith("row"))
+    assert heads == list(range(heads[0], last + 1))  # the header again on every page the table reaches
+
+
+@pytest.mark.parametrize("gap", [640, 660, 675, 690])
+def test_a_section_heading_never_ends_a_page(preamble, gap):
+    source = preamble + f'#v({gap}pt)\n#section[{_mark("heading")}Worked solution]\n{_mark("next")}Text that follows.\n'
+    page = {m["name"]: m["page"] for m in marks(source, "probe")}
+    assert page["heading"] == page["next"]
