@@ -190,13 +190,14 @@ class Sketch:
         return self.d.svg(title)
 
 
-def around(point, first_direction, distance: float, size: float):
+def around(point, first_direction, distance: float, size: float, widest: float = 4):
     """Candidate spots for a short level label round a point, starting in `first_direction` and
-    turning both ways in 45° steps (then the 22.5° between), at four distances."""
+    turning both ways in 45° steps (then the 22.5° between) up to `widest` steps, at four distances."""
     base = math.atan2(first_direction[1], first_direction[0]) if any(first_direction) else -math.pi / 2
+    turns = [k for k in (0, 1, -1, 2, -2, 3, -3, 4, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 3.5, -3.5) if abs(k) <= widest]
     out = []
     for reach in (distance, distance * 1.6, distance * 2.4, distance * 3.2):
-        for k in (0, 1, -1, 2, -2, 3, -3, 4, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 3.5, -3.5):
+        for k in turns:
             t = base + k * math.pi / 4
             x, y = point[0] + reach * math.cos(t), point[1] + reach * math.sin(t)
             anchor = "start" if math.cos(t) > 0.5 else ("end" if math.cos(t) < -0.5 else "middle")

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import linkages as lk
-from .angles import direction_formula
+from .angles import difference, direction
 from .polygons import APART, angle_gap_deg, require_angle_apart
 
 #: The transmission angle is kept in this window: nearer a dead point the answers turn on the
@@ -101,28 +101,26 @@ def coupler_point(p, d):
     xb = d.step("xB", p.xA + p.L2 * math.cos(p.theta2), "m", symbol="x_B", formula=r"@xA + @L2\cos @theta2",
                 note="R_H = R_1 + R_2, from D to the crank pin B")
     yb = d.step("yB", p.yA + p.L2 * math.sin(p.theta2), "m", symbol="y_B", formula=r"@yA + @L2\sin @theta2")
-    theta_h = d.step("theta_H", math.atan2(yb, xb), "rad", symbol=r"\theta_H",
-                     formula=direction_formula("@yB", "@xB", yb, xb, math.atan2(yb, xb)),
-                     note="the direction D → B, in the quadrant of its components")
+    theta_h = direction(d, "theta_H", r"\theta_H", "@yB", "@xB", yb, xb, "the direction D → B")
     r_h = d.step("r_H", math.hypot(xb, yb), "m", symbol="r_H", formula=r"\sqrt{@xB^2 + @yB^2}")
     phi = d.step("phi", lk.cosine_law_angle(r_h, p.L4, p.L3), "rad", symbol=r"\varphi",
                  formula=r"\cos^{-1}\frac{@r_H^2 + @L4^2 - @L3^2}{2\,@L4\,@r_H}",
                  note="the angle BDC in triangle DBC (cosine law)")
     turn = 1.0 if circuit == 2 else -1.0
-    theta4 = d.step("theta4", lk.wrap(theta_h + turn * phi), "rad", symbol=r"\theta_4",
+    theta4 = d.step("theta4", theta_h + turn * phi, "rad", symbol=r"\theta_4",
                     formula=rf"@theta_H {'+' if turn > 0 else '-'} @phi",
                     note=f"circuit {circuit}: C on the {'right' if circuit == 2 else 'left'} of B → D, "
                          f"{'counter-' if turn > 0 else ''}clockwise from D → B")
     xc = d.step("xC", p.L4 * math.cos(theta4), "m", symbol="x_C", formula=r"@L4\cos @theta4")
     yc = d.step("yC", p.L4 * math.sin(theta4), "m", symbol="y_C", formula=r"@L4\sin @theta4")
-    theta3 = d.step("theta3", math.atan2(yc - yb, xc - xb), "rad", symbol=r"\theta_3",
-                    formula=direction_formula("@yC - @yB", "@xC - @xB", yc - yb, xc - xb, math.atan2(yc - yb, xc - xb)),
-                    note="the coupler B → C from the loop R_4 = R_H + R_3 (the text's loop takes R_3 from C to B, 180° round)")
+    theta3 = direction(d, "theta3", r"\theta_3", "@yC - @yB", "@xC - @xB", yc - yb, xc - xb,
+                       "the coupler B → C from the loop R_4 = R_H + R_3 (the text's loop takes R_3 from C to B, "
+                       "180° round)")
     alpha = d.step("alpha", lk.cosine_law_angle(p.CP, p.L3, p.BP), "rad", symbol=r"\alpha",
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",
                    note="the angle BCP of the coupler triangle (cosine law)")
     right = str(p.side) == "right"
-    theta6 = d.step("theta6", lk.wrap(theta3 + math.pi + (alpha if right else -alpha)), "rad", symbol=r"\theta_6",
+    theta6 = d.step("theta6", theta3 + math.pi + (alpha if right else -alpha), "rad", symbol=r"\theta_6",
                     formula=rf"@theta3 + 180^\circ {'+' if right else '-'} @alpha",
                     note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
                          + ("counter-clockwise (P on the right of B → C)" if right else "clockwise (P on the left of B → C)"))
@@ -147,7 +145,7 @@ def _coupler_point_mistakes(p, d, geometry, angles, answer) -> None:
         t3 = math.atan2(c[1] - b[1], c[0] - b[0])
         return t3, lk.coupler_point(c, t3, p.CP, alpha, left_of_bc=not right_used)
 
-    other4 = lk.wrap(theta_h - turn * phi)
+    other4 = theta_h - turn * phi
     other3, other_point = place(other4, right)
     theta1 = math.atan2(-p.yA, -p.xA)
     wrongs = {"wrong_circuit": other_point, "other_side": place(theta4, not right)[1]}
@@ -226,8 +224,8 @@ def rocker_swing(p, d):
         out[tag] = d.step(f"theta4_{tag}", math.pi - delta, "rad", symbol=rf"\theta_{{4,\mathrm{{{tag}}}}}",
                           formula=rf"180^\circ - @delta_{tag}", note="C above the ground line, measured from +x")
         d.mistake(f"theta4_{tag}", "interior_angle", delta)
-    swing = d.step("swing", abs(out["ext"] - out["fold"]), "rad", symbol=r"\psi",
-                   formula=r"|@theta4_ext - @theta4_fold|", note="the rocker's swing between its limit positions")
+    swing = difference(d, "swing", r"\psi", "theta4_ext", "theta4_fold",
+                       note="the rocker's swing between its limit positions")
     limits = lk.rocker_limits(p.L1, p.L2, p.L3, p.L4)
     d.mistake("theta4_ext", "sum_and_difference_swapped", limits.theta4_folded)
     d.mistake("theta4_fold", "sum_and_difference_swapped", limits.theta4_extended)

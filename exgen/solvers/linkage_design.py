@@ -12,8 +12,8 @@ from __future__ import annotations
 import math
 
 from ..mechanics import linkages as lk
-from .angles import direction_formula
 from .fourbars import GRASHOF_REASON
+from .angles import difference, direction
 from .polygons import APART, angle_gap_deg, require_angle_apart
 
 SENSES = ("clockwise", "counter-clockwise")
@@ -29,9 +29,7 @@ def actuator_swing(p, d):
     """
     ao = d.step("AO", math.hypot(p.xO, p.yO), "m", symbol="AO", formula=r"\sqrt{@xO^2 + @yO^2}",
                 note="between the link's pivot A and the actuator's pivot O")
-    beta = d.step("beta", math.atan2(p.yO, p.xO), "rad", symbol=r"\beta",
-                  formula=direction_formula("@yO", "@xO", p.yO, p.xO, math.atan2(p.yO, p.xO)),
-                  note="the direction A → O, in the quadrant of its components")
+    beta = direction(d, "beta", r"\beta", "@yO", "@xO", p.yO, p.xO, "the direction A → O")
     turn = 1.0 if str(p.side) == "left" else -1.0
     sign = "+" if turn > 0 else "-"
     angles = {}
@@ -39,17 +37,17 @@ def actuator_swing(p, d):
         angle = d.step(f"angle{k}", lk.actuator_link_angle(ao, p.r, getattr(p, length)), "rad",
                        symbol=rf"\angle OAB_{k}", formula=rf"\cos^{{-1}}\frac{{@AO^2 + @r^2 - @{length}^2}}{{2\,@AO\,@r}}",
                        note=f"in triangle OAB with the actuator {'as drawn' if k == 1 else 'retracted'} (cosine law)")
-        angles[k] = d.step(f"theta{k}", lk.wrap(beta + turn * angle), "rad", symbol=rf"\theta_{k}",
+        angles[k] = d.step(f"theta{k}", beta + turn * angle, "rad", symbol=rf"\theta_{k}",
                            formula=rf"@beta {sign} @angle{k}", note=f"B on the {p.side} of the line from A to O")
-        d.mistake(f"theta{k}", "other_side", lk.wrap(beta - turn * angle))
+        d.mistake(f"theta{k}", "other_side", beta - turn * angle)
         d.mistake(f"theta{k}", "interior_angle", angle)
         if d.strict:
-            require_angle_apart(d, angles[k], lk.wrap(beta - turn * angle), "the other side of AO")
+            require_angle_apart(d, angles[k], beta - turn * angle, "the other side of AO")
             require_angle_apart(d, angles[k], angle, "the interior angle")
         d.require(math.radians(25) <= angle <= math.radians(155), "the actuator nearly in line with the link")
-    rotation = lk.wrap(angles[2] - angles[1])
-    size = d.step("rotation", abs(rotation), "rad", symbol=r"\Delta\theta", formula=r"|@theta2 - @theta1|",
-                  note="the support link's rotation")
+    rotation = angles[2] - angles[1]
+    size = difference(d, "rotation", r"\Delta\theta", "angle1", "angle2",
+                      note="the support link turns as much as the angle OAB changes")
     d.step("sense", SENSES[rotation > 0], "", symbol=r"\text{sense}",
            note="retracting pulls B towards O, " + ("counter-clockwise" if rotation > 0 else "clockwise") + " here")
     d.mistake("rotation", "radians_for_degrees", math.radians(size))
@@ -82,8 +80,7 @@ def two_position_synthesis(p, d):
         mid = (x1 + x2) / 2
         d.mistake(f"xO{name}", "midpoint", mid)
         d.mistake(f"R{name}", "midpoint", math.hypot(x1 - mid, y1))
-    ground = d.step("ground", abs(pivots["N"][0] - pivots["M"][0]), "m", symbol="EF",
-                    formula=r"|@xON - @xOM|", note="the ground link")
+    ground = difference(d, "ground", "EF", "xON", "xOM", note="the ground link", unit="m")
     g = lk.grashof(ground, lengths["M"], p.b, lengths["N"])
     d.step("kind", g.kind, "", symbol=r"\text{class}",
            note=f"S + L = {_mm(g.s_plus_l)} against P + Q = {_mm(g.p_plus_q)}, with EM the input: "

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import math
 
-from ..mechanics import linkages as lk
 from ..mechanics.slider_cranks import slider_crank as solve_slider
+from .angles import between
 from .polygons import APART, APART_DEG, angle_gap_deg
 
 SLIDE_OF = {"right": "horizontal", "left": "horizontal", "below": "vertical", "above": "vertical"}
@@ -50,21 +50,19 @@ def slider_crank(p, d):
     formula, note = THETA3[slide]
     theta3 = d.step("theta3", position.theta3, "rad", symbol=r"\theta_3", formula=formula, note=note)
     formula, note = DIRECTION[where]
-    phi3 = d.step("phi3", lk.wrap(_direction(where, theta3)), "rad", symbol=r"\varphi_3", formula=formula,
+    phi3 = d.step("phi3", _direction(where, theta3), "rad", symbol=r"\varphi_3", formula=formula,
                   note=f"the coupler B → C from +x, {note}")
     formula, note = L4[where]
     l4 = d.step("L4", _distance(where, p.L2, p.L3, p.theta2, theta3), "m", symbol="L_4", formula=formula,
                 note=f"{note}, along the line of slide")
-    gamma = abs(lk.wrap(math.pi + p.theta2 - phi3))
     text_gamma = math.pi - (p.theta2 + theta3)
-    if where in ("right", "below") and abs(text_gamma - gamma) < 1e-9:
-        d.step("gamma", gamma, "rad", symbol=r"\gamma", formula=r"180^\circ - (@theta2 + @theta3)",
+    if where in ("right", "below") and 0 <= text_gamma <= math.pi:
+        d.step("gamma", text_gamma, "rad", symbol=r"\gamma", formula=r"180^\circ - (@theta2 + @theta3)",
                note="eq 7.12: the angle ABC between crank and coupler")
     else:
-        turns = round((math.pi + p.theta2 - phi3) / (2 * math.pi))  # whole turns taken off to land within ±180°
-        less = "" if turns == 0 else (rf" - {360 * turns}^\circ" if turns > 0 else rf" + {-360 * turns}^\circ")
-        d.step("gamma", gamma, "rad", symbol=r"\gamma", formula=rf"|@theta2 + 180^\circ - @phi3{less}|",
-               note="the angle ABC between crank (B → A at θ2 + 180°) and coupler, taken between 0° and 180°")
+        between(d, "gamma", r"\gamma", r"@theta2 + 180^\circ - @phi3", p.theta2 + math.pi - phi3,
+                "the angle ABC between crank (B → A at θ2 + 180°) and coupler (B → C at φ3), "
+                "taken by whole turns to between 0° and 180°")
     ux, uy = TOWARDS[where]
     cx = p.L1 if slide == "vertical" else ux * l4
     cy = -p.L1 if slide == "horizontal" else uy * l4

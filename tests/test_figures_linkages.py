@@ -1,0 +1,80 @@
+"""Linkage figures: drawn to each variant's data, links numbered for counting, nothing asked printed."""
+import math
+
+import pytest
+
+from exgen.figures.linkages import coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction
+from exgen.figures.mechanisms import kinematic_diagram
+from exgen.mechanics import linkages as lk
+from exgen.variant import make_variant
+from svg_helpers import SVG, circles, root, texts, variant_of
+
+
+def pins(svg):
+    return [(float(c.get("cx")), float(c.get("cy"))) for c in circles(svg, "pin")]
+
+
+@pytest.mark.parametrize("theta2, circuit", [(75, "1"), (75, "2"), (200, "1"), (320, "2")])
+def test_four_bar_is_drawn_to_scale_in_its_circuit(bank, theta2, circuit):
+    variant = variant_of(bank, "linkages.fourbar_position", L1=250, L2=80, L3=260, L4=180, theta2=theta2,
+                         circuit=circuit)
+    found = pins(fourbar(variant))
+    assert len(found) == 4
+    # the four pins are A, B, C, D: their six distances are the links and diagonals, to one scale
+    drawn = sorted(math.dist(p, q) for i, p in enumerate(found) for q in found[i + 1:])
+    joints = lk.joints(0.25, 0.08, 0.26, 0.18, math.radians(theta2), int(circuit))
+    expected = sorted(math.dist(joints[p], joints[q]) for p, q in ("AB", "BC", "CD", "DA", "AC", "BD"))
+    assert expected[:4] != drawn[:4]
+    scale = drawn[-1] / expected[-1]
+    assert [x / scale for x in drawn] == pytest.approx(expected, rel=2e-3)
+    assert {0.25, 0.08, 0.26, 0.18} <= {round(x, 6) for x in expected}
+
+
+def test_key_figure_adds_the_other_circuit(bank):
+    variant = variant_of(bank, "linkages.fourbar_position", L1=250, L2=80, L3=260, L4=180, theta2=75, circuit="1")
+    sheet, key = fourbar(variant), fourbar_circuits(variant)
+    assert "C′" in texts(key) and "C′" not in texts(sheet)
+    assert len([e for e in root(key).iter(f"{SVG}line") if "other-circuit" in e.get("class", "")]) == 2
+
+
+def test_every_value_a_sheet_figure_prints_is_given_data(bank):
+    """So no figure carries an answer: each 'name = value' label shows a given value as printed."""
+    for template_id in ("linkages.fourbar_position", "linkages.coupler_point", "linkages.slider_crank",
+                        "linkages.grashof", "linkages.rocker_swing", "linkages.actuator_swing",
+                        "linkages.two_position_synthesis"):
+        for seed in range(8):
+            variant = make_variant(bank.get(template_id), seed)
+            given = {str(p) for p in variant.params}
+            for text in texts(_sheet_figure(variant)):
+                value = text.split(" = ", 1)[1] if " = " in text else None
+                if value and value not in ("0", "0, 0"):
+                    assert value in given, (template_id, seed, text)
+
+
+def _sheet_figure(variant):
+    from exgen.figures import figure_svg
+    return figure_svg(variant)
+
+
+def test_coupler_point_figure_marks_p_and_the_origin(bank):
+    variant = make_variant(bank.get("linkages.coupler_point"), 3)
+    words = texts(coupler_point(variant))
+    assert {"A", "B", "C", "P", "D (0, 0)"} <= set(words)
+    assert any(w.startswith("CP = ") for w in words) and any(w.startswith("BP = ") for w in words)
+
+
+def test_synthesis_key_shows_the_pivots_the_sheet_does_not(bank):
+    variant = make_variant(bank.get("linkages.two_position_synthesis"), 2)
+    assert "E" not in texts(synthesis(variant)) and {"E", "F"} <= set(texts(synthesis_construction(variant)))
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_mobility_diagram_numbers_every_link(bank, seed):
+    variant = make_variant(bank.get("linkages.mobility"), seed)
+    svg = kinematic_diagram(variant)
+    labels = root(svg).iter(f"{SVG}text")
+    numbers = [("".join(t.itertext()), t.get("class", "")) for t in labels]
+    moving = sorted(int(n) for n, cls in numbers if cls == "link-number")
+    links = variant.answers["a"].value
+    assert moving == list(range(2, links + 1))
+    assert any(n == "1" and cls == "ground-number" for n, cls in numbers)
