@@ -157,10 +157,11 @@ def _coupler_point_mistakes(p, d, geometry, angles, answer) -> None:
         if angle_gap_deg(relative, value) >= 3.0:
             d.mistake(name, "relative_to_ground_line", relative)
     scale = max(p.L2, p.L3, p.L4, p.CP)
-    for name, (x, y) in wrongs.items():
-        d.mistake("xP", name, x)
-        d.mistake("yP", name, y)
-        d.require(not d.strict or math.dist((x, y), answer) >= 0.1 * scale, f"{name.replace('_', ' ')} barely moves P")
+    for name, point in wrongs.items():
+        d.require(not d.strict or math.dist(point, answer) >= 0.1 * scale, f"{name.replace('_', ' ')} barely moves P")
+        for step, wrong, right in zip(("xP", "yP"), point, answer):
+            if abs(wrong - right) >= max(APART * abs(right), 0.004):   # beyond the 2 mm a coordinate is graded to
+                d.mistake(step, name, wrong)
 
 
 GRASHOF_REASON = {

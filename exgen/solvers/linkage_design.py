@@ -79,7 +79,9 @@ def two_position_synthesis(p, d):
                                note=f"the link from {pivot} to {name}: it reaches {name}2 as well")
         mid = (x1 + x2) / 2
         d.mistake(f"xO{name}", "midpoint", mid)
-        d.mistake(f"R{name}", "midpoint", math.hypot(x1 - mid, y1))
+        below_mid = math.hypot(x1 - mid, y1)
+        if abs(below_mid - lengths[name]) >= APART * lengths[name]:
+            d.mistake(f"R{name}", "midpoint", below_mid)
     ground = difference(d, "ground", "EF", "xON", "xOM", note="the ground link", unit="m")
     g = lk.grashof(ground, lengths["M"], p.b, lengths["N"])
     d.step("kind", g.kind, "", symbol=r"\text{class}",
