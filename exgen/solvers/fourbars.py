@@ -107,7 +107,7 @@ def coupler_point(p, d):
                  formula=r"\cos^{-1}\frac{@r_H^2 + @L4^2 - @L3^2}{2\,@L4\,@r_H}",
                  note="the angle BDC in triangle DBC (cosine law)")
     turn = 1.0 if circuit == 2 else -1.0
-    theta4 = d.step("theta4", theta_h + turn * phi, "rad", symbol=r"\theta_4",
+    theta4 = d.step("theta4", lk.wrap(theta_h + turn * phi), "rad", symbol=r"\theta_4",
                     formula=rf"@theta_H {'+' if turn > 0 else '-'} @phi",
                     note=f"circuit {circuit}: C on the {'right' if circuit == 2 else 'left'} of B → D, "
                          f"{'counter-' if turn > 0 else ''}clockwise from D → B")
@@ -120,7 +120,7 @@ def coupler_point(p, d):
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",
                    note="the angle BCP of the coupler triangle (cosine law)")
     right = str(p.side) == "right"
-    theta6 = d.step("theta6", theta3 + math.pi + (alpha if right else -alpha), "rad", symbol=r"\theta_6",
+    theta6 = d.step("theta6", lk.wrap(theta3 + math.pi + (alpha if right else -alpha)), "rad", symbol=r"\theta_6",
                     formula=rf"@theta3 + 180^\circ {'+' if right else '-'} @alpha",
                     note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
                          + ("counter-clockwise (P on the right of B → C)" if right else "clockwise (P on the left of B → C)"))
@@ -145,7 +145,7 @@ def _coupler_point_mistakes(p, d, geometry, angles, answer) -> None:
         t3 = math.atan2(c[1] - b[1], c[0] - b[0])
         return t3, lk.coupler_point(c, t3, p.CP, alpha, left_of_bc=not right_used)
 
-    other4 = theta_h - turn * phi
+    other4 = lk.wrap(theta_h - turn * phi)
     other3, other_point = place(other4, right)
     theta1 = math.atan2(-p.yA, -p.xA)
     wrongs = {"wrong_circuit": other_point, "other_side": place(theta4, not right)[1]}

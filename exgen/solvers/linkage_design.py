@@ -37,15 +37,15 @@ def actuator_swing(p, d):
         angle = d.step(f"angle{k}", lk.actuator_link_angle(ao, p.r, getattr(p, length)), "rad",
                        symbol=rf"\angle OAB_{k}", formula=rf"\cos^{{-1}}\frac{{@AO^2 + @r^2 - @{length}^2}}{{2\,@AO\,@r}}",
                        note=f"in triangle OAB with the actuator {'as drawn' if k == 1 else 'retracted'} (cosine law)")
-        angles[k] = d.step(f"theta{k}", beta + turn * angle, "rad", symbol=rf"\theta_{k}",
+        angles[k] = d.step(f"theta{k}", lk.wrap(beta + turn * angle), "rad", symbol=rf"\theta_{k}",
                            formula=rf"@beta {sign} @angle{k}", note=f"B on the {p.side} of the line from A to O")
-        d.mistake(f"theta{k}", "other_side", beta - turn * angle)
+        d.mistake(f"theta{k}", "other_side", lk.wrap(beta - turn * angle))
         d.mistake(f"theta{k}", "interior_angle", angle)
         if d.strict:
             require_angle_apart(d, angles[k], beta - turn * angle, "the other side of AO")
             require_angle_apart(d, angles[k], angle, "the interior angle")
         d.require(math.radians(25) <= angle <= math.radians(155), "the actuator nearly in line with the link")
-    rotation = angles[2] - angles[1]
+    rotation = lk.wrap(angles[2] - angles[1])
     size = difference(d, "rotation", r"\Delta\theta", "angle1", "angle2",
                       note="the support link turns as much as the angle OAB changes")
     d.step("sense", SENSES[rotation > 0], "", symbol=r"\text{sense}",
