@@ -261,19 +261,6 @@ def bisector_on_line(p1: tuple[float, float], p2: tuple[float, float], y_line: f
     return mx - (y_line - my) * dy / dx, y_line
 
 
-def circumcentre(p1, p2, p3) -> tuple[float, float]:
-    """The point equidistant from three positions: where their bisectors meet (three-position synthesis)."""
-    ax, ay = p1
-    bx, by = p2
-    cx, cy = p3
-    det = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-    if abs(det) < EQUAL * (abs(ax) + abs(bx) + abs(cx) + abs(ay) + abs(by) + abs(cy) + 1.0) ** 2:
-        raise NotAssemblable("the three positions lie on one line")
-    a2, b2, c2 = ax * ax + ay * ay, bx * bx + by * by, cx * cx + cy * cy
-    return ((a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / det,
-            (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / det)
-
-
 def moves_between(a, d, b1, c1, b2, c2, samples: int = 90) -> bool:
     """Whether the four-bar A-B-C-D (ground pivots a, d) carries B and C from (b1, c1) to (b2, c2)
     without leaving its circuit: the crank turns the short way round and the linkage assembles
