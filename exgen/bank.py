@@ -19,13 +19,14 @@ from . import expr
 from .domains import domain_of, drawn_values, parse_domain
 from .answertypes import answer_type, names as answer_type_names
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
-from .template import MistakeSpec, ParamSpec, PartSpec, Template
+from .template import MistakeSpec, ParamSpec, PartSpec, ReportSpec, Template
 from .versions import data_digest
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
-                 "solver", "statement", "parts", "figure", "key_figures"}
+                 "solver", "statement", "parts", "figure", "key_figures", "report"}
 PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain"}
+REPORT_KEYS = {"what", "value", "unit", "range"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
 MAX_VALUES = 100_000
 
@@ -176,6 +177,7 @@ class _Reader:
             statement=statement, parts=parts, figure=figure, key_figures=key_figures,
             source=str(data.get("source", "")),
             topic=str(data.get("topic", "")), path=self.path, digest=digest,
+            report=self.report(data.get("report") or []),
         )
 
     def params(self, data) -> tuple[ParamSpec, ...]:
@@ -293,6 +295,48 @@ class _Reader:
             return ()
         refs = [self.reference(ref, "figures", ("key_figures", i)) for i, ref in enumerate(data)]
         return tuple(ref for ref in refs if ref)
+
+    def report(self, data) -> tuple[ReportSpec, ...]:
+        """`report:` entries: {what: belt density, value: m / A, unit: kg/m^3, range: [1000, 1500]}.
+        Names in `value` are parameters or solver steps; steps are known only once the solver runs,
+        so a wrong name is reported by `exgen validate`."""
+        from . import units
+        from .errors import QuantityError
+
+        if not isinstance(data, list):
+            self.error(("report",), "must be a list of {what, value, unit, range}")
+            return ()
+        out = []
+        for i, item in enumerate(data):
+            where = ("report", i)
+            if not isinstance(item, dict):
+                self.error(where, "must be a mapping such as {what: belt density, value: m / A, unit: kg/m^3, range: [1000, 1500]}")
+                continue
+            self.unknown_keys(item, REPORT_KEYS, where)
+            missing = [k for k in ("what", "value", "range") if item.get(k) in (None, "")]
+            for key in missing:
+                self.error(where + (key,), "is required")
+            if missing:
+                continue
+            try:
+                expr.parse(str(item["value"]))
+            except expr.ExpressionError as exc:
+                self.error(where + ("value",), str(exc))
+                continue
+            unit = str(item.get("unit", ""))
+            try:
+                units.unit_info(unit)
+            except QuantityError as exc:
+                self.error(where + ("unit",), str(exc))
+                continue
+            bounds = item["range"]
+            if (not isinstance(bounds, list) or len(bounds) != 2
+                    or not all(isinstance(b, (int, float)) and not isinstance(b, bool) for b in bounds)
+                    or bounds[0] >= bounds[1]):
+                self.error(where + ("range",), "must be [low, high] with low < high, in the unit given")
+                continue
+            out.append(ReportSpec(str(item["what"]), str(item["value"]), unit, float(bounds[0]), float(bounds[1])))
+        return tuple(out)
 
     def reference(self, ref, package: str, where) -> str | None:
         """'belts:flat_belt_power' -> checks exgen.<package>.belts has that function."""

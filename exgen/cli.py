@@ -130,6 +130,8 @@ def solution_json(variant) -> dict:
             for part_id, a in variant.answers.items()
         },
         "steps": [{"name": s.name, "value": plain(s.value), "unit": s.unit} for s in variant.steps],
+        "derived": [{"what": r.spec.what, "value": r.value, "unit": r.spec.unit, "plausible": [r.spec.low, r.spec.high],
+                     "ok": r.plausible} for r in variant.derived],
     }
 
 
@@ -189,7 +191,7 @@ def cmd_validate(args) -> int:
     failed = [r for r in reports if not r.ok]
     for report in reports:
         print(report.line())
-        for problem in report.problems + report.warnings:
+        for problem in report.problems + report.warnings + report.details():
             print(f"    {problem}")
     print(f"\n{len(reports) - len(failed)} of {len(reports)} template(s) valid over {args.seeds} seeds each")
     return 1 if failed else 0

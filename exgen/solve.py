@@ -35,6 +35,9 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
     """Each parameter's value in the template's own unit, from what the user typed."""
     names = {p.name for p in template.params}
     unknown = sorted(set(given) - names)
+    # a parameter fixed in the template (`value:`) takes that value unless another is given
+    given = {**{p.name: str(p.choices[0]) for p in template.params
+                if not p.derived and not p.is_range and len(p.choices) == 1}, **given}
     missing = [p for p in template.params if p.name not in given and not p.derived]
     problems = []
     if unknown:

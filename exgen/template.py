@@ -90,6 +90,22 @@ class PartSpec:
 
 
 @dataclass(frozen=True)
+class ReportSpec:
+    """A derived quantity a template reports, with the range a real machine keeps it in.
+
+    `value` is an expression over the parameters and solver steps (SI); `unit` is the unit the
+    value and `low`..`high` are written in. A draw outside the range is rejected; `exgen solve`
+    warns instead, and `exgen validate` prints the range each quantity was drawn over.
+    """
+
+    what: str
+    value: str
+    unit: str
+    low: float
+    high: float
+
+
+@dataclass(frozen=True)
 class Template:
     id: str
     title: str
@@ -106,6 +122,7 @@ class Template:
     topic: str = ""
     path: Path | None = None
     digest: str = ""  # sha256 of the parsed data (exgen.versions.data_digest); its full version: template_version
+    report: tuple[ReportSpec, ...] = ()
 
     def param(self, name: str) -> ParamSpec:
         return next(p for p in self.params if p.name == name)

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import math
 import time
+from collections import Counter
 from dataclasses import dataclass, field
 
 from .answertypes import answer_type
 from .draw import failed_requirement
 from .errors import ExgenError, FormatProblem, WrongKind
-from .template import Template
+from .template import ReportSpec, Template
 from .variant import Variant, answer_for, make_variant, rerun
 
 COINCIDENCE_WARNING = 0.05  # share of draws where a mistake equals the answer
@@ -31,6 +32,9 @@ class Report:
     distinct: float = 0.0
     mean_tries: float = 0.0
     ms_per_variant: float = 0.0
+    ranges: list[tuple[ReportSpec, float, float]] = field(default_factory=list)  # drawn min, max
+    rejected: Counter = field(default_factory=Counter)  # why draws were turned down
+    accepted: int = 0
 
     @property
     def ok(self) -> bool:
@@ -40,6 +44,21 @@ class Report:
         mark = "ok  " if self.ok else "FAIL"
         return (f"{mark} {self.template.id:<32} {self.distinct:6.1%} distinct, {self.mean_tries:4.2f} draws/variant, "
                 f"{self.ms_per_variant:5.2f} ms/variant")
+
+    def details(self) -> list[str]:
+        """The drawn range of each reported quantity against its plausible range, then the commonest
+        reasons draws were rejected (what a template author tightens or constructs differently)."""
+        from .units import format_number, pretty_unit
+
+        lines = []
+        for spec, low, high in self.ranges:
+            unit = f" {pretty_unit(spec.unit)}" if spec.unit else ""
+            lines.append(f"{spec.what}: drawn {format_number(low)} to {format_number(high)}{unit} "
+                         f"(plausible {spec.low:g} to {spec.high:g})")
+        draws = sum(self.rejected.values()) + self.accepted
+        for reason, count in self.rejected.most_common(3):
+            lines.append(f"rejected {count / max(draws, 1):.0%} of draws: {reason}")
+        return lines
 
 
 def validate_bank(templates: list[Template], seeds: int = 200, progress=None) -> list[Report]:
@@ -52,7 +71,7 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
     variants, start = [], time.perf_counter()
     for seed in range(seeds):
         try:
-            variants.append(make_variant(template, seed))
+            variants.append(make_variant(template, seed, rejected=report.rejected))
         except ExgenError as exc:
             report.problems.append(f"seed {seed}: {exc}")
             if len(report.problems) >= 5:
@@ -61,17 +80,31 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
         return report
     report.ms_per_variant = (time.perf_counter() - start) * 1000 / len(variants)
     report.mean_tries = sum(v.tries for v in variants) / len(variants)
+    report.accepted = len(variants)
     report.distinct = len({tuple(p.text for p in v.params) for v in variants}) / len(variants)
     for variant in variants:
         for problem in check_variant(variant):
             if len(report.problems) < 10:
                 report.problems.append(f"seed {variant.seed}: {problem}")
     _check_mistakes(template, variants, report)
+    _check_reports(template, variants, report)
     if report.distinct < DISTINCT_WARNING:
         report.warnings.append(f"only {report.distinct:.0%} of {len(variants)} seeds give distinct data: widen the ranges")
     if report.mean_tries > TRIES_WARNING:
         report.warnings.append(f"{report.mean_tries:.1f} draws per accepted variant: most draws break a constraint")
     return report
+
+
+def _check_reports(template: Template, variants: list[Variant], report: Report) -> None:
+    """The drawn range of every `report:` quantity; one outside its plausible range is a problem."""
+    for i, spec in enumerate(template.report):
+        values = [v.derived[i].value for v in variants if len(v.derived) > i]
+        finite = [x for x in values if math.isfinite(x)]
+        if finite:
+            report.ranges.append((spec, min(finite), max(finite)))
+        odd = [r for r in (v.derived[i] for v in variants if len(v.derived) > i) if not r.plausible]
+        if odd:
+            report.problems.append(f"{spec.what}: {len(odd)} of {len(values)} draws outside {spec.low:g} to {spec.high:g}")
 
 
 def check_variant(variant: Variant) -> list[str]:

@@ -13,6 +13,7 @@ from .answertypes import answer_type
 from .derivation import Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw
+from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
 from .template import PartSpec, Template
 from .text import render_text
 
@@ -68,6 +69,7 @@ class Variant:
     tries: int = field(default=1, compare=False)
     warnings: tuple[str, ...] = ()
     inserts: tuple = ()  # tables of the worked solution (derivation.Table)
+    derived: tuple[Reading, ...] = ()  # the template's `report:` quantities, in their units
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -87,8 +89,10 @@ def resolve(reference: str, package: str):
     return getattr(importlib.import_module(f"exgen.{package}.{module_name}"), attr)
 
 
-def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES) -> Variant:
-    """Draw until the constraints hold and the solver accepts the data (bounded tries)."""
+def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES, rejected=None) -> Variant:
+    """Draw until the constraints hold and the solver accepts the data (bounded tries).
+
+    `rejected`, a Counter, counts why draws were turned down (for `exgen validate`)."""
     rng = generator(seed)
     reason = ""
     for attempt in range(1, max_tries + 1):
@@ -97,6 +101,8 @@ def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES) -> V
             return build_variant(template, values, seed=seed, tries=attempt)
         except InvalidDraw as exc:
             reason = str(exc)
+            if rejected is not None:
+                rejected[f"implausible {exc.what}" if isinstance(exc, Implausible) else reason] += 1
     raise DrawError(template.id, max_tries, reason)
 
 
@@ -108,7 +114,15 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         broken = failed_requirement(template, si)
         if broken:
             raise InvalidDraw(f"requires {broken}")
+        odd = early_rejection(template, si)
+        if odd is not None:
+            raise Implausible(odd)
     derivation = run_solver(template, si, strict=check)
+    derived = readings(template, names_for(si, derivation.steps))
+    odd = first_implausible(derived)
+    if odd is not None and check:
+        raise Implausible(odd)
+    found_warnings = [r.complaint() for r in derived if not r.plausible]
     params = tuple(
         ParamValue(s.name, values[s.name], s.unit, si[s.name], s.label, s.symbol or default_symbol(s.name))
         for s in template.params
@@ -123,7 +137,8 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
         statement=render_text(template.statement, context),
         asks=MappingProxyType({p.id: render_text(p.ask, context) for p in template.parts}),
-        tries=tries, warnings=tuple(derivation.warnings), inserts=tuple(derivation.inserts),
+        tries=tries, warnings=tuple(derivation.warnings) + tuple(found_warnings), inserts=tuple(derivation.inserts),
+        derived=derived,
     )
 
 
