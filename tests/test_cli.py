@@ -9,7 +9,7 @@ from exgen.cli import main
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 EXAMPLE_1_5 = ["--set", "d1=0.5m", "--set", "d2=1.2m", "--set", "X=3.6m", "--set", "N1=200rpm", "--set", "mu=0.3",
-               "--set", "m=0.9kg/m", "--set", "A=320mm^2", "--set", "E=300MN/m^2", "--set", "T_max=2kN"]
+               "--set", "rho=2812.5kg/m^3", "--set", "A=320mm^2", "--set", "E=300MN/m^2", "--set", "sigma=6.25MPa"]
 
 
 def test_list(capsys):
@@ -37,6 +37,9 @@ def test_solve_json_has_every_part_value_and_unit(capsys):
     data = json.loads(capsys.readouterr().out)
     assert data["parts"]["a"]["unit"] == "deg" and data["parts"]["a"]["value"] == pytest.approx(168.8415, rel=1e-6)
     assert data["parts"]["c"]["unit"] == "kW" and data["parts"]["c"]["value"] == pytest.approx(6.14594, rel=1e-5)
+    density = next(q for q in data["derived"] if q["what"] == "belt density")
+    assert density == {"what": "belt density", "value": pytest.approx(2812.5), "unit": "kg/m^3",
+                       "plausible": [1000, 1500], "ok": False}
 
 
 @pytest.mark.parametrize("argv, message", [

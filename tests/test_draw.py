@@ -25,8 +25,8 @@ def test_golden_draw_does_not_drift(bank):
     # If this changes, every issued sheet would change at grading time: never change it lightly.
     values = draw_values(bank.get("belts.flat_belt_power"), generator(12345))
     assert {k: str(v) for k, v in values.items()} == {
-        "d1": "800", "d2": "900", "X": "2.8", "N1": "570", "mu": "0.25", "m": "0.9", "A": "460",
-        "E": "100", "T_max": "2.8"}
+        "d1": "500", "d2": "1050", "X": "2.8", "N1": "620", "mu": "0.25", "A": "300", "rho": "1500",
+        "E": "100", "sigma": "2.75"}
 
 
 def test_values_are_exact_steps_inside_their_range(bank):

@@ -29,8 +29,12 @@ def _open_contact_angle(p, d, r1, r2):
                    formula=rf"\sin^{{-1}}\frac{{@{large} - @{small}}}{{@X}}")
     theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"180^\circ - 2\,@alpha",
                    note="on the smaller pulley, which governs an open drive")
+    large = d.step("theta_large", 2 * math.pi - theta, "rad", symbol=r"\theta_{\mathrm{large}}",
+                   formula=r"360^\circ - @theta", note="on the larger pulley, 180° + 2α: the two wraps make a full turn")
     d.mistake("theta", "crossed_formula", mb.contact_angle_crossed(r1, r2, p.X))
-    d.mistake("theta", "larger_pulley", math.pi + 2 * alpha)
+    d.mistake("theta", "larger_pulley", large)
+    d.mistake("theta_large", "smaller_pulley", theta)
+    d.mistake("theta_large", "crossed_formula", mb.contact_angle_crossed(r1, r2, p.X))
     if abs(p.d2 - p.d1) < p.X:
         d.mistake("theta", "diameters_for_radii", math.pi - 2 * math.asin(abs(p.d2 - p.d1) / p.X))
     return theta
@@ -68,7 +72,8 @@ def belt_power(p, d):
     degree_ratio = math.exp(min(p.mu * math.degrees(theta) / (math.sin(beta) if beta else 1.0), 700))
 
     # (c) inelastic belt, mass neglected
-    t1 = d.step("T1", p.T_max, "N", formula=r"@T_max", note="the tight side carries the maximum tension")
+    t1 = d.step("T1", p.sigma * p.A, "N", formula=r"@sigma\,@A",
+                note="the tight side carries the largest tension the allowable stress permits")
     t2_light = d.step("T2_light", mb.slack_tension(t1, ratio), "N", symbol=r"T_2",
                       formula=r"\frac{@T1}{@ratio}", note="the belt's mass neglected")
     p_light = d.step("P_light", mb.power(t1, t2_light, v), "W", symbol=r"P",
@@ -79,7 +84,8 @@ def belt_power(p, d):
         d.mistake("P_light", "full_groove_angle", mb.power(t1, t1 / mb.tension_ratio(p.mu, theta, 2 * beta), v))
 
     # (d) inelastic belt, centrifugal tension considered
-    tc = d.step("Tc", mb.centrifugal_tension(p.m, v), "N", symbol=r"T_c", formula=r"@m\,@v^2")
+    m = d.step("m", p.rho * p.A, "kg/m", formula=r"@rho\,@A", note="the belt's mass per metre")
+    tc = d.step("Tc", mb.centrifugal_tension(m, v), "N", symbol=r"T_c", formula=r"@m\,@v^2")
     d.require(tc < t1 / 3, "centrifugal tension above a third of the maximum: past the maximum-power speed")
     d.require(tc > APART * t1, "centrifugal tension too small to matter")
     t2 = d.step("T2", mb.slack_tension(t1, ratio, tc), "N", symbol=r"T_2'",
@@ -185,8 +191,8 @@ def drive_geometry(p, d):
            formula=r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r2 - @r1)^2}{@X}")
     d.step("L_crossed", mb.length_crossed(r1, r2, p.X), "m", symbol=r"L_{\times}",
            formula=r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r1 + @r2)^2}{@X}")
-    d.mistake("L_open", "crossed_formula", mb.length_crossed(r1, r2, p.X))
-    d.mistake("L_crossed", "open_formula", mb.length_open(r1, r2, p.X))
+    d.mistake("L_open", "crossed_length", mb.length_crossed(r1, r2, p.X))
+    d.mistake("L_crossed", "open_length", mb.length_open(r1, r2, p.X))
     for name, fn in (("L_open", mb.length_open), ("L_crossed", mb.length_crossed)):
         d.mistake(name, "diameters_for_radii", fn(p.d1, p.d2, p.X))
 
@@ -196,15 +202,18 @@ def max_power(p, d):
     r1, r2 = _radii(p, d)
     theta = _open_contact_angle(p, d, r1, r2)
     ratio = _tension_ratio(p, d, theta)
-    v = d.step("v_opt", mb.speed_for_max_power(p.T_max, p.m), "m/s", symbol=r"v_{\mathrm{opt}}",
+    t_max = d.step("T_max", p.sigma * p.A, "N", symbol=r"T_{\max}", formula=r"@sigma\,@A",
+                   note="the largest tension the allowable stress permits")
+    m = d.step("m", p.rho * p.A, "kg/m", formula=r"@rho\,@A", note="the belt's mass per metre")
+    v = d.step("v_opt", mb.speed_for_max_power(t_max, m), "m/s", symbol=r"v_{\mathrm{opt}}",
                formula=r"\sqrt{\frac{@T_max}{3\,@m}}", note=r"maximum power when $T_c = T_{\max}/3$")
-    d.mistake("v_opt", "tc_equals_tmax", math.sqrt(p.T_max / p.m))
-    d.mistake("v_opt", "tc_half", math.sqrt(p.T_max / (2 * p.m)))
-    tc = d.step("Tc", p.m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v_opt^2")
-    d.step("P_max", (p.T_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\max}",
+    d.mistake("v_opt", "tc_equals_tmax", math.sqrt(t_max / m))
+    d.mistake("v_opt", "tc_half", math.sqrt(t_max / (2 * m)))
+    tc = d.step("Tc", m * v ** 2, "N", symbol=r"T_c", formula=r"@m\,@v_opt^2")
+    d.step("P_max", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\max}",
                    formula=r"(@T_max - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v_opt")
-    d.mistake("P_max", "centrifugal_ignored", p.T_max * (1 - 1 / ratio) * v)
-    d.mistake("P_max", "theta_in_degrees", (p.T_max - tc) * v)
+    d.mistake("P_max", "centrifugal_ignored", t_max * (1 - 1 / ratio) * v)
+    d.mistake("P_max", "theta_in_degrees", (t_max - tc) * v)
     d.step("N_opt", v / r1, "rad/s", symbol=r"\omega_1", formula=r"\frac{@v_opt}{@r1}",
            note="driver speed that gives this belt speed")
     d.mistake("N_opt", "diameter_for_radius", v / p.d1)
@@ -233,8 +242,12 @@ def v_belt_count(p, d):
                    formula=r"e^{@mu\,@theta / \sin @beta}", note="the tension ratio $(T_1 - T_c)/(T_2 - T_c)$")
     per_belt = d.step("P_belt", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\mathrm{belt}}",
                       formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v")
+    exact = d.step("n_exact", p.P / per_belt, "", symbol=r"\frac{P}{P_{\mathrm{belt}}}",
+                   formula=r"\frac{@P}{@P_belt}", note="belts needed, before rounding")
     count = d.step("n_belts", mb.belts_needed(p.P, per_belt), "", symbol="n",
-                   formula=r"\left\lceil \frac{@P}{@P_belt} \right\rceil", note="rounded up to whole belts")
+                   formula=r"\left\lceil @n_exact \right\rceil", note="rounded up to whole belts")
+    d.require(0.05 < exact - math.floor(exact) < 0.95, "the duty needs nearly a whole number of belts: rounding "
+              "earlier steps could change the count")
     d.require(2 <= count <= 12, "an unrealistic number of belts")
     d.mistake("n_belts", "rounded_down", math.floor(p.P / per_belt))
     d.mistake("n_belts", "centrifugal_ignored", mb.belts_needed(p.P, t_max * (1 - 1 / ratio) * v))
