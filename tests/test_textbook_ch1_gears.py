@@ -41,6 +41,7 @@ import math
 
 import pytest
 
+from exgen.cli import solution_json
 from exgen.solve import solve
 from exgen.variant import make_variant
 
@@ -51,6 +52,12 @@ RPM = 2 * math.pi / 60
 def answers(bank, template_id, **given):
     variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
     return {part: answer.value for part, answer in variant.answers.items()}, warnings
+
+
+def steps(bank, template_id, **given):
+    """Every step `exgen solve --json` prints, by name, in SI."""
+    variant, _ = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
+    return {step["name"]: step["value"] for step in solution_json(variant)["steps"]}
 
 
 def test_example_1_7_compound_train_in_inches(bank):
@@ -86,29 +93,52 @@ def test_example_1_9_gear_pair_power(bank):
     assert got["g"] == pytest.approx(0.85 * 240)             # not asked in the text: the torque with losses
 
 
+# The text gives no number of planets. Example 1.10's 15 + 60 teeth assemble three equally spaced planets
+# ((S + R)/3 = 25); Example 1.11's 30 + 100 do not (130/3), but two, five, ten or thirteen do: the tests
+# give two, and the speeds do not depend on it.
+EXAMPLE_1_10 = dict(ts=15, tp=22.5, planets=3, fixed="ring", driver="arm", N_in="100 rpm", sense_in="counter-clockwise")
+EXAMPLE_1_11 = dict(ts=30, tp=35, planets=2, fixed="sun", driver="arm", N_in="1200 rpm", sense_in="clockwise")
+
+
 def test_example_1_10_ring_fixed_arm_drives_sun(bank):
-    got, _ = answers(bank, "gears.epicyclic", ts=15, tp=22.5, fixed="ring", driver="arm", N_in="100 rpm",
-                     sense_in="counter-clockwise")
+    got, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_10)
     assert got["a"] == 60
     assert got["b"] == pytest.approx(-15 / 60)
     assert got["c"] / 100 == pytest.approx(5.0)              # printed: N2/NA = +5, the same direction
     assert got["d"] == pytest.approx(100 * (1 - 60 / 22.5))  # the planet: row (c) = 1 + (-1)(60/22.5)
+    assert steps(bank, "gears.epicyclic", **EXAMPLE_1_10)["n_train"] == pytest.approx(5.0)  # the asked N2/NA
+    assert warnings == []
 
 
 def test_example_1_11_sun_fixed_arm_drives(bank):
-    got, _ = answers(bank, "gears.epicyclic", ts=30, tp=35, fixed="sun", driver="arm", N_in="1200 rpm",
-                     sense_in="clockwise")
+    got, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_11)
     assert got["a"] == 100                                   # the text's ring has 100 teeth
     assert got["c"] == pytest.approx(-1200 * (1 + 30 / 100))  # printed: -1560 rpm, clockwise
     assert got["c"] == pytest.approx(-1560)
     assert got["d"] == pytest.approx(-1200 * (1 + 30 / 35))   # printed -2228.52 from 1.8571: exactly -2228.57
     assert got["d"] == pytest.approx(-2228.52, rel=1e-4)
+    assert warnings == []
+
+
+def test_example_1_11_every_member(bank):
+    # "Determine the rotational velocity of all members": sun (fixed) 0, arm -1200, planet -2228.57, ring -1560.
+    got = steps(bank, "gears.epicyclic", **EXAMPLE_1_11)
+    assert got["N_fixed"] == 0.0
+    assert got["w_in"] == pytest.approx(-1200 * RPM)
+    assert got["N_planet"] == pytest.approx(-1200 * (1 + 30 / 35) * RPM)
+    assert got["N_out"] == pytest.approx(-1560 * RPM)
+    assert got["b_planet"] == pytest.approx(30 / 35) and round(got["c_planet"], 4) == 1.8571  # the table's X, P
+    assert got["b_free"] == pytest.approx(0.3) and got["c_free"] == pytest.approx(1.3)         # and its X, Q
 
 
 def test_example_1_11_driven_from_the_ring_gives_the_arm_back(bank):
-    got, _ = answers(bank, "gears.epicyclic", ts=30, tp=35, fixed="sun", driver="gear", N_in="1560 rpm",
-                     sense_in="clockwise")
+    got, _ = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "driver": "gear", "N_in": "1560 rpm"})
     assert got["c"] == pytest.approx(-1200)
+
+
+def test_example_1_11_planets_that_do_not_assemble_are_named(bank):
+    _, warnings = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "planets": 3})
+    assert warnings == ["these values break the template's drawing constraint '(2 * ts + 2 * tp) % planets == 0'"]
 
 
 EXAMPLE_1_12 = dict(M="250 kg", a="1.2 m/s^2", dD="1.2 m", t1=20, t2=200, eta="90 %", mM="250 kg", kM="100 mm",
@@ -144,6 +174,11 @@ def test_problem_1_1_robot_arm(bank):
     assert got["a"] == pytest.approx(i_eq)
     assert got["b"] == pytest.approx(c_coeff * math.cos(math.radians(30)))
     assert got["c"] == pytest.approx(a_coeff * 2 + c_coeff * math.cos(math.radians(30)))
+    # the asked equation itself: its two coefficients
+    coeffs = steps(bank, "gears.robot_arm", k12=2, k34=1.5, I_m="0.05 kg*m^2", I_G1="0.025 kg*m^2",
+                   I_G2="0.1 kg*m^2", I_G3="0.025 kg*m^2", I_G4="0.008 kg*m^2", m="10 kg", L="0.3 m", eta="90 %",
+                   theta="30 deg", alpha_A="2 rad/s^2")
+    assert coeffs["k_alpha"] == pytest.approx(a_coeff) and coeffs["k_weight"] == pytest.approx(c_coeff)
 
 
 def test_problem_1_2_lift_counterweight(bank):
@@ -179,6 +214,11 @@ def test_problem_1_5_printed_data_give_a_63_degree_hill(bank):
     assert got["c"] == pytest.approx(math.degrees(math.asin(sine)))
     assert round(got["c"], 1) == 63.0
     assert "not a road gradient (1-12 degrees)" in warnings
+    # "the gear ratio for second gear", as gearboxes quote it: engine to wheel, 5.73 : 1
+    ratio = steps(bank, "gears.vehicle_gradient", m="1600 kg", v="50 km/h", I_E="0.3 kg*m^2", I_W="0.6 kg*m^2",
+                  eta="95 %", r="0.38 m", R="800 N", tau_E="1100 N*m", N_E="2000 rpm", a="0.5 m/s^2",
+                  tau_fE="6 N*m", tau_fW="20 N*m")["ratio_EW"]
+    assert ratio == pytest.approx(1 / n) and round(ratio, 2) == 5.73
 
 
 def test_problem_1_5_drawn_variants_climb_roads(bank):
@@ -253,8 +293,8 @@ def test_example_1_12_slips_are_named(bank, part_id, typed, mistake):
     ("b", "-3.333", "ratio_inverted"),
 ])
 def test_example_1_11_slips_are_named(bank, part_id, typed, mistake):
-    variant, _ = solve(bank.get("gears.epicyclic"), {"ts": "30", "tp": "35", "fixed": "sun", "driver": "arm",
-                                                     "N_in": "1200 rpm", "sense_in": "clockwise"})
+    variant, _ = solve(bank.get("gears.epicyclic"), {"ts": "30", "tp": "35", "planets": "2", "fixed": "sun",
+                                                     "driver": "arm", "N_in": "1200 rpm", "sense_in": "clockwise"})
     result = _graded(variant, part_id, typed)
     assert (result.points, result.mistake) == (0, mistake), result.message
 

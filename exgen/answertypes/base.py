@@ -214,7 +214,8 @@ def exact_quantity(value: float, unit: str) -> str:
 
 def asked_unit(part: PartSpec) -> str:
     """The unit an answer is asked in, as the sheet writes it ('deg', 'kW', 'N·m')."""
-    return {"deg": "deg", "degree": "deg", "percent": "%"}.get(part.unit, units.pretty_unit(part.unit)) \
+    # "in" is spelt out: never "answer in in"
+    return {"deg": "deg", "degree": "deg", "percent": "%", "in": "inches"}.get(part.unit, units.pretty_unit(part.unit)) \
         if part.unit else ""
 
 

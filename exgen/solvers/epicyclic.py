@@ -78,6 +78,9 @@ def epicyclic(p, d):
     planet = d.step("N_planet", scale * c_planet, "rad/s", symbol=SYMBOL["planet"], formula=rf"{across}\,@c_planet",
                     shown="rpm")
 
+    d.step("N_fixed", 0.0, "rad/s", symbol=SYMBOL[fixed], note=f"the {fixed} is held: row (c) gives it 0")
+    d.step("n_train", out / w_in, "", symbol=rf"\frac{{{SYMBOL[output]}}}{{{SYMBOL[driver]}}}",
+           formula=r"\frac{@N_out}{@w_in}", note=f"the train's speed ratio, {output} to {driver}")
     speeds = {fixed: 0.0, driver: w_in, output: out}
     d.step("e_check", (speeds["ring"] - speeds["arm"]) / (speeds["sun"] - speeds["arm"]), "",
            symbol=r"\frac{\omega_R - \omega_A}{\omega_S - \omega_A}",

@@ -21,6 +21,13 @@ def _gravity(d) -> float:
     return d.constant("g", G, "m/s^2", note="standard gravity")
 
 
+def _mistake_if_apart(d, step: str, name: str, wrong: float, right: float, rel: float) -> None:
+    """Record a mistake only where its value stands `rel` clear of the answer. For a small effect (one
+    more gear contact's loss at a real 95-98 % efficiency) this keeps the draw instead of rejecting it."""
+    if abs(wrong - right) >= rel * abs(right):
+        d.mistake(step, name, wrong)
+
+
 def _inertias(p, d):
     """Example 1.12: shaft inertias from mass and radius of gyration, referred to the motor."""
     i_m = d.step("I_M", p.mM * p.kM ** 2, "kg*m^2", formula=r"@mM\,@kM^2")
@@ -87,8 +94,7 @@ def lift_counterweight(p, d):
                   symbol=r"I_{EQ}", formula=r"@I_M + \frac{@I_T\,@n1^2}{@eta} + \frac{@I_D\,@n^2}{@eta^2}",
                   note="the drum is two contacts from the motor, the middle shaft one")
     one_contact = p.I_M + (p.I_T * n1 ** 2 + p.I_D * n ** 2) / p.eta
-    d.mistake("I_EQ", "one_contact_efficiency", one_contact)
-    d.require_apart(i_eq, one_contact, APART_SMALL, "the second contact's efficiency")
+    _mistake_if_apart(d, "I_EQ", "one_contact_efficiency", one_contact, i_eq, APART_SMALL)
     d.mistake("I_EQ", "ratio_not_squared", p.I_M + p.I_T * n1 / p.eta + p.I_D * n / p.eta ** 2)
     d.mistake("I_EQ", "efficiency_multiplied", p.I_M + p.I_T * n1 ** 2 * p.eta + p.I_D * n ** 2 * p.eta ** 2)
     r_d, alpha_m = _motor_acceleration(p, d, n)
@@ -107,8 +113,9 @@ def lift_counterweight(p, d):
     def counterweight(tau_drum, accel_sign=-1.0, resist=p.R):
         return (p.ml * (G + p.a) + resist - tau_drum / r_d) / (G + accel_sign * p.a)
 
-    d.mistake("M2", "one_contact_efficiency", counterweight((p.tau_M - tau1) * p.eta / n))
-    d.mistake("M2", "efficiency_wrong_way", counterweight((p.tau_M - tau1) / (p.eta ** 2 * n)))
+    _mistake_if_apart(d, "M2", "one_contact_efficiency", counterweight((p.tau_M - tau1) * p.eta / n), mass, APART_SMALL)
+    _mistake_if_apart(d, "M2", "efficiency_wrong_way", counterweight((p.tau_M - tau1) / (p.eta ** 2 * n)), mass,
+                      APART_SMALL)
     d.mistake("M2", "counterweight_accel_sign", counterweight(left, +1.0))
     d.mistake("M2", "resistance_forgotten", counterweight(left, resist=0.0))
     d.mistake("M2", "inertia_forgotten", counterweight(mg.available_torque(p.tau_M, n, p.eta ** 2)))
@@ -157,6 +164,8 @@ def vehicle_gradient(p, d):
     d.mistake("N_W", "kmh_as_ms", p.v * 3.6 / p.r)
     n = d.step("n", omega_w / p.N_E, "", formula=r"\frac{@N_W}{@N_E}", note=r"$n = \omega_W/\omega_E$, the text's definition")
     d.mistake("n", "ratio_inverted", p.N_E / omega_w)
+    d.step("ratio_EW", 1 / n, "", symbol=r"\frac{\omega_E}{\omega_W}", formula=r"\frac{1}{@n}",
+           note="the same gear quoted engine to wheel, as gearboxes usually are")
     alpha_e = d.step("alpha_E", p.a / p.r / n, "rad/s^2", symbol=r"\alpha_E", formula=r"\frac{@a}{@r\,@n}")
     i_eq = d.step("I_EQ", p.I_E + mg.referred_inertia(p.I_W, n, p.eta), "kg*m^2", symbol=r"I_{EQ}",
                   formula=r"@I_E + \frac{@I_W\,@n^2}{@eta}")
@@ -203,8 +212,7 @@ def robot_arm(p, d):
                   note="gears 2 and 3 are one contact from the motor, the arm two")
     d.mistake("I_EQ", "ratio_not_squared", first + (p.I_G2 + p.I_G3) * n12 / p.eta + i_arm * n / p.eta ** 2)
     one_contact = first + ((p.I_G2 + p.I_G3) * n12 ** 2 + i_arm * n ** 2) / p.eta
-    d.mistake("I_EQ", "one_contact_efficiency", one_contact)
-    d.require_apart(i_eq, one_contact, APART_SMALL, "the second pair's efficiency")
+    _mistake_if_apart(d, "I_EQ", "one_contact_efficiency", one_contact, i_eq, APART_SMALL)
     d.mistake("I_EQ", "arm_mass_forgotten", first + (p.I_G2 + p.I_G3) * n12 ** 2 / p.eta + p.I_G4 * n ** 2 / p.eta ** 2)
     weight = p.m * G * p.L
     _gravity(d)
@@ -215,6 +223,10 @@ def robot_arm(p, d):
     d.mistake("tau_g", "sin_for_cos", weight * math.sin(p.theta) * n / p.eta ** 2)
     d.mistake("tau_g", "ratio_inverted", weight * math.cos(p.theta) / n / p.eta ** 2)
     d.require_apart(hold, weight * math.sin(p.theta) * n / p.eta ** 2, APART, "sine for cosine")
+    d.step("k_alpha", i_eq / n, "kg*m^2", symbol=r"\frac{I_{EQ}}{n}", formula=r"\frac{@I_EQ}{@n}",
+           note=r"Problem 1.1's equation: $\tau_m = (I_{EQ}/n)\,\alpha_A + (n/\eta^2)\,m g L \cos\theta$")
+    d.step("k_weight", weight * n / p.eta ** 2, "N*m", symbol=r"\frac{n\,m g L}{\eta^2}",
+           formula=r"\frac{@m\,(9.81)\,@L\,@n}{@eta^2}", note=r"the coefficient of $\cos\theta$")
     alpha_m = d.step("alpha_m", p.alpha_A / n, "rad/s^2", symbol=r"\alpha_m", formula=r"\frac{@alpha_A}{@n}")
     torque = d.step("tau_m", i_eq * alpha_m + hold, "N*m", symbol=r"\tau_m", formula=r"@I_EQ\,@alpha_m + @tau_g")
     d.mistake("tau_m", "ratio_inverted", i_eq * p.alpha_A * n + hold)
