@@ -13,6 +13,8 @@ import math
 
 import pytest
 
+from exgen.cli import solution_json
+from exgen.mechanics import engines as me
 from exgen.solve import solve
 
 OMEGA_2000 = 2 * math.pi * 2000 / 60
@@ -21,6 +23,17 @@ OMEGA_2000 = 2 * math.pi * 2000 / 60
 def answers(bank, template_id, **given):
     variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
     return {part: answer.value for part, answer in variant.answers.items()}, warnings
+
+
+def steps(bank, template_id, **given):
+    """Every step `exgen solve --json` prints, by name, in SI (angles in radians)."""
+    variant, _ = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
+    return {step["name"]: step["value"] for step in solution_json(variant)["steps"]}
+
+
+def degrees_is(radians, angle_deg, abs_deg=0.01):
+    gap = (math.degrees(radians) - angle_deg) % 360
+    return min(gap, 360 - gap) <= abs_deg
 
 
 def polar_is(value, magnitude, angle_deg, rel=1e-4, abs_deg=0.01):
@@ -36,6 +49,10 @@ def test_example_2_1_static_balance(bank):
     assert got["a"].magnitude == pytest.approx(5.0)
     assert got["a"].angle_deg == pytest.approx(270 - 36.8699, abs=1e-4)  # printed: 233.13 deg
     assert got["b"] == pytest.approx(5.0)  # "Assuming B = 5 kg; then b = 1 mm"
+    # (b) "excluding a mass": the same m r taken off half a turn round, at 53.13 deg
+    removed = steps(bank, "balancing.static_balance", m1="3 kg", r1="1 mm", m2="2 kg", r2="2 mm", theta2="90 deg",
+                    m3="0 kg", r3="1 mm", theta3="180 deg", b="1 mm")["theta_b_remove"]
+    assert degrees_is(removed, 90 - 36.8699, abs_deg=1e-4)
 
 
 def test_example_2_2_two_planes_reference_x(bank):
@@ -52,6 +69,29 @@ def test_example_2_2_two_planes_reference_x(bank):
     assert polar_is(got["b"], 5 / 3, 180 - math.degrees(math.atan(4 / 3)))  # printed 1.67 kg (1.7 kg mm), 126 deg
 
 
+EXAMPLE_2_2 = dict(m1="3 kg", r1="1 mm", theta1="0 deg", z1="1 m", m2="2 kg", r2="2 mm", theta2="90 deg", z2="2 m",
+                   m3="0 kg", r3="1 mm", theta3="0 deg", z3="3 m", B1="3 kg", b1="1.9 mm", bX="1 mm")
+
+
+def test_example_2_2_the_correction_plane_found_from_its_mass(bank):
+    # Example 2.2 as the text works it: the moment polygon gives B1 b1 x = 8.544 kg mm m (read as 8.6) at
+    # 249.4 deg (read as 250); "if we assume B1 = 3 kg and b1 = 1.9 mm; so x = 1.5 m" (exactly 1.499 m, or
+    # 1.509 m from the reading 8.6). The force polygon then gives B2 b2 = 1.7 kg mm at 126 deg: with b2 = 1 mm,
+    # B2 = 1.67 kg. (The third mass of the template is set to nothing.)
+    got, warnings = answers(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)
+    moment = math.hypot(3, 8)
+    theta_q = 180 + math.degrees(math.atan(8 / 3))                 # 249.44 deg
+    assert got["a"] == pytest.approx(theta_q) and round(got["a"], 1) == 249.4
+    assert got["b"] == pytest.approx(moment / (3 * 1.9)) and round(got["b"], 2) == 1.5
+    fx = 3 + 3 * 1.9 * math.cos(math.radians(theta_q))
+    fy = 4 + 3 * 1.9 * math.sin(math.radians(theta_q))
+    assert polar_is(got["c"], math.hypot(fx, fy) / 1, math.degrees(math.atan2(-fy, -fx)) % 360)
+    assert round(got["c"].magnitude, 2) == 1.67 and round(got["c"].angle_deg) == 127  # printed 1.67 kg at 126 deg
+    assert steps(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)["MQ"] == pytest.approx(moment * 1e-3)  # kg mm m
+    # the text's masses are tiny against the correction: the template would never draw them
+    assert warnings == []
+
+
 def test_example_2_5_two_planes_reference_p(bank):
     # Example 2.5: planes P, 1, 2, Q each 1.2 m apart; 2 kg at 40 mm, 90 deg; 1 kg at 50 mm, 0 deg.
     got, _ = answers(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
@@ -64,6 +104,12 @@ def test_example_2_5_two_planes_reference_p(bank):
     fx, fy = 50 + q * math.cos(math.radians(q_angle)), 80 + q * math.sin(math.radians(q_angle))
     assert polar_is(got["b"], math.hypot(fx, fy) / 30, math.degrees(math.atan2(-fy, -fx)) % 360)
     assert round(got["b"].magnitude, 3) == 1.863 and round(got["b"].angle_deg, 1) == 252.6  # printed 1.87 kg, 253 deg
+    # "OR mass 2.14 kg should be removed at angle 38 deg" (and 1.87 kg at 73 deg in P)
+    removed = steps(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
+                    m2="1 kg", r2="50 mm", theta2="0 deg", z2="2.4 m", m3="0 kg", r3="1 mm", theta3="0 deg",
+                    z3="3 m", zP="0 m", zQ="3.6 m", rP="30 mm", rQ="20 mm")
+    assert degrees_is(removed["theta_Q_remove"], q_angle - 180) and round(q_angle - 180) == 39  # printed 38
+    assert degrees_is(removed["theta_P_remove"], got["b"].angle_deg - 180)                   # printed 73
 
 
 def test_example_2_3_complete_balance_erratum(bank):
@@ -93,21 +139,37 @@ def test_example_2_4_bearing_forces_erratum(bank):
     # force on the bearing acts opposite the balancing direction: 6.179 N at 301.4 deg (58.6 deg below A).
     moment = math.hypot(-96 + 250 * math.cos(math.radians(60)), 250 * math.sin(math.radians(60)) - 264)
     assert round(moment, 2) == 55.65
+    at_y = steps(bank, "balancing.bearing_reactions", mA="8 kg", rA="60 mm", mB="10 kg", rB="50 mm",
+                 thetaB="60 deg", mC="6 kg", rC="40 mm", thetaC="270 deg", a="0.2 m", b="0.5 m", c="0.3 m",
+                 e="0.3 m", N="90 rpm")
+    assert at_y["MY"] * 1e3 == pytest.approx(moment)              # the moment 0.8 R_Y as a magnitude, kg mm m
+    assert round(at_y["RY"] * 1e3, 2) == 69.56                    # printed 72.5 kg mm (erratum)
     assert polar_is(got["a"], moment / 0.8e3 * omega2, 301.4, rel=1e-9, abs_deg=0.05)
     assert round(got["a"].magnitude, 3) == 6.179
     # Force polygon, read graphically in the text as R_X = 740 kg mm at 200 deg, F_X = 65.7 N (at 20 deg).
     assert round(got["b"].magnitude, 2) == 65.57 and round(got["b"].angle_deg, 0) == 20
 
 
+EXAMPLE_2_6 = dict(theta1="100 deg", theta2="30 deg", theta3="300 deg", theta4="200 deg", m="1 kg", r="1 m", l="3 m",
+                   a="1 m", N="1 rad/s")
+
+
 def test_example_2_6_inline_engine_forces_and_couples(bank):
     # Example 2.6: unit masses, cranks and pitch, rod 3 units; cranks at 100, 30, 300, 200 deg. At 1 rad/s
-    # the answers are the text's multiples of omega^2 (read graphically there to two figures).
-    got, _ = answers(bank, "balancing.inline_engine_unbalance", theta1="100 deg", theta2="30 deg",
-                     theta3="300 deg", theta4="200 deg", m="1 kg", r="1 m", l="3 m", a="1 m", N="1 rad/s")
-    assert polar_is(got["a"], 0.374762, 227.60)                   # printed 0.37 w^2 at 228 deg
+    # the answers are the text's multiples of omega^2 (read graphically there to two figures). Its cranks
+    # are no real engine's, so the template draws four cranks 90 deg apart, whose forces balance; the
+    # directions of the force and secondary balancing force and couple are asked only of this example's
+    # data, and come from `exgen solve --json`.
+    got, warnings = answers(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
+    assert got["a"] == pytest.approx(0.374762, rel=1e-5)          # printed 0.37 w^2
     assert polar_is(got["b"], 2.986758, 63.51)                    # printed 2.98 w^2 at 64 deg
-    assert polar_is(got["c"], 0.347296 / 3, 300.0)                # printed 0.34/3 = 0.113 w^2 at 300 deg
-    assert polar_is(got["d"], 2.147418 / 3, 196.54)               # printed 2.14/3 = 0.713 w^2 at 196 deg
+    assert got["c"] == pytest.approx(0.347296 / 3, rel=1e-5)      # printed 0.34/3 = 0.113 w^2
+    assert got["d"] == pytest.approx(2.147418 / 3, rel=1e-5)      # printed 2.14/3 = 0.713 w^2
+    angles = steps(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
+    assert degrees_is(angles["theta_Fp"], 227.60)                 # printed: add at 228 deg
+    assert degrees_is(angles["theta_Fs"], 300.0)                  # printed: add at 300 deg
+    assert degrees_is(angles["theta_Cs"], 196.54)                 # printed: add at 196 deg
+    assert "these values break the template's drawing constraint" not in " ".join(warnings)
 
 
 def test_example_2_7_six_cylinder_is_balanced(bank):
@@ -119,18 +181,28 @@ def test_example_2_7_six_cylinder_is_balanced(bank):
     assert got["d"] == "balanced"
 
 
-def test_problem_2_4a_six_cylinder_firing_1_6_3_2_5_4(bank):
+def test_problem_2_4a_six_cylinder_firing_1_6_3_2_5_4():
     # Problem 2.4(a): 1.2 kg, r 100 mm, rod 240 mm, 0.2 m pitch, 2000 rpm, four-stroke 1-6-3-2-5-4.
     # Cranks: 1 and 2 at 0, 3 and 4 at 240, 5 and 6 at 120 deg; the forces balance, the couples do not:
     # primary |-4 a (0 deg) + 4 a (120 deg)| = 4 sqrt(3) a m r w^2, secondary the same over n (2 theta: 0, 120, 240).
-    got, warnings = answers(bank, "balancing.inline_engine_firing", firing="1-6-3-2-5-4", strokes="4",
-                            m="1.2 kg", r="100 mm", l="240 mm", a="0.2 m", N="2000 rpm")
+    # No six fires in this order (it puts cranks 1 and 2 in phase and leaves the primary couple no
+    # designer would), so balancing.inline_engine_firing does not offer it; the physics it uses does.
+    order = me.parse_firing_order("1-6-3-2-5-4")
+    angles = me.crank_angles(order, 4)
+    ordered = [angles[i] for i in range(1, 7)]
+    positions = me.centred_positions(6, 0.2)
+    (fp, _), (cp, _) = me.inline_unbalance(1.2, 0.1, 2.4, OMEGA_2000, ordered, positions, 1)
+    (fs, _), (cs, _) = me.inline_unbalance(1.2, 0.1, 2.4, OMEGA_2000, ordered, positions, 2)
     unit = 1.2 * 0.1 * OMEGA_2000 ** 2
-    assert got["a"] == pytest.approx(4 * math.sqrt(3) * 0.2 * unit)          # 7294 N m
-    assert got["b"] == 0.0
-    assert got["c"] == pytest.approx(4 * math.sqrt(3) * 0.2 * unit / 2.4)    # 3039 N m
-    assert got["d"] == "not balanced"
-    assert warnings == ["an unusual rod-to-crank ratio"]  # n = 2.4; drawn variants keep 3 <= n <= 6
+    assert cp == pytest.approx(4 * math.sqrt(3) * 0.2 * unit)                # 7294 N m
+    assert fp == 0.0 and fs == 0.0
+    assert cs == pytest.approx(4 * math.sqrt(3) * 0.2 * unit / 2.4)          # 3039 N m
+
+
+def test_problem_2_4a_is_no_firing_order_the_template_offers(bank):
+    with pytest.raises(Exception, match="firing must be one of"):
+        answers(bank, "balancing.inline_engine_firing", firing="1-6-3-2-5-4", strokes="4", m="1.2 kg", r="100 mm",
+                l="240 mm", a="0.2 m", N="2000 rpm")
 
 
 def test_example_2_8_three_cylinder_radial(bank):
@@ -179,7 +251,9 @@ def test_problem_2_1_primary_balance_by_inner_cranks(bank):
     k = 0.325 * omega ** 2 / (1.25 / 0.325)
     sx = k * (5 + 5 * math.cos(math.radians(240)) + m_c * math.cos(2 * theta_c) + math.hypot(fx, fy) * math.cos(2 * theta_b))
     sy = k * (5 * math.sin(math.radians(240)) + m_c * math.sin(2 * theta_c) + math.hypot(fx, fy) * math.sin(2 * theta_b))
-    assert polar_is(got["c"], math.hypot(sx, sy), math.degrees(math.atan2(sy, sx)) % 360)
+    # (b) "the direction and the maximum secondary unbalanced force": asked, like every engine sheet, as the
+    # angle at which a balancing force must act, half a turn from the resultant
+    assert polar_is(got["c"], math.hypot(sx, sy), (math.degrees(math.atan2(sy, sx)) + 180) % 360)
 
 
 PROBLEM_2_2 = dict(mB="18 kg", mC="12.5 kg", rBC="60 mm", rAD="80 mm", thetaC="100 deg", lAB="100 mm", lBC="200 mm")
@@ -214,4 +288,5 @@ def test_problem_2_2_as_printed_puts_d_out_of_order(bank):
     got, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="90 deg", **PROBLEM_2_2)
     assert [got[k] for k in "abcd"] == pytest.approx(_problem_2_2_by_hand(90))
     assert round(got["d"], 1) == 72.6
-    assert warnings == ["plane D does not lie beyond C, as the order A, B, C, D needs"]
+    assert warnings == ["plane D does not lie beyond C, as the order A, B, C, D needs",
+                        "mass D per heavier of B and C 2.220 is outside the plausible 0.1-2"]  # 39.97 kg / 18 kg

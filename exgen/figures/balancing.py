@@ -67,6 +67,24 @@ def shaft_two_planes(variant) -> str:
                  "angles clockwise from the vertical")
 
 
+def shaft_correction_position(variant) -> str:
+    """Example 2.2: three masses and the correction plane X at the left end; the correction B₁, whose plane
+    is the unknown, appears only in the end view (drawn anywhere on the shaft, it would give x away)."""
+    planes = [Plane(str(i), _si(variant, f"z{i}"), "mass",
+                    (str(i), _value(variant, f"m{i}"), _value(variant, f"r{i}"))) for i in (1, 2, 3)]
+    planes.append(Plane("X", 0.0, "correction", ("X (ref.)", f"r = {_value(variant, 'bX')}", "m = ?")))
+    d = Drawing()
+    x_of = side_view(d, planes, ends=(0.0, max(p.z for p in planes) + 0.15))
+    ordinates(d, x_of, [(_si(variant, f"z{i}"), _value(variant, f"z{i}")) for i in (1, 2, 3)])
+    d.text((x_of(0.0), d.box[3] + 18), f"distances from X; B₁ = {_value(variant, 'B1')} at "
+           f"r = {_value(variant, 'b1')}, its plane x = ? from X", anchor="start", size=13, style="italic")
+    spokes = [_mass_spoke(variant, str(i), f"m{i}", f"r{i}", f"theta{i}") for i in (1, 2, 3)]
+    spokes += [Spoke("B₁", "B₁: angle ?", 1.0, None), Spoke("X", "X: angle ?", 1.0, None)]
+    _place_end_view(d, spokes, Convention(-math.pi / 2, True, "0°"), "seen from the left end")
+    return d.svg("Shaft with three masses, a correction B₁ in a plane x from X, and a correction in X; "
+                 "angles clockwise from the vertical")
+
+
 def shaft_position(variant) -> str:
     """Example 2.3: A, B, C, D with D's plane unknown (drawn dashed, not to scale); reference plane B."""
     l_ab, l_bc = _si(variant, "lAB"), _si(variant, "lBC")
