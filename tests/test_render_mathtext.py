@@ -62,7 +62,9 @@ def test_split_math(text, chunks):
     ("2. step", r"2\. step"),
     ("line\n- item", "line\n\\- item"),
     ("x-? y", r"x-\? y"),
-    ("mm² N·m θ", "mm² N·m θ"),
+    ("mm² N·m θ", "mm² #box[N#h(-0.2em)·#h(-0.2em)m] θ"),   # tight and unbroken, like the key's math N·m
+    ("(kg·m²)", "#box[(kg#h(-0.2em)·#h(-0.2em)m²)]"),
+    ("course · title", "course · title"),
 ])
 def test_escape_typst(prose, escaped):
     assert escape_typst(prose) == escaped

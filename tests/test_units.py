@@ -59,6 +59,9 @@ def test_a_strange_but_harmless_unit_is_read_as_what_it_is():
     (5.0, "percent", "", 0.05),
     (1.0, "m/min", "m/s", 1 / 60),
     (289.8, "Nm", "N*m", 289.8),
+    (289.8, "N-m", "N*m", 289.8),            # the hyphen some students (and US texts) write
+    (1.5, "kN-m", "N*m", 1500.0),
+    (250.0, "N-mm", "N*m", 0.25),
 ])
 def test_convert(value, src, dst, expected):
     assert convert(value, src, dst) == pytest.approx(expected)

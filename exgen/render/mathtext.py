@@ -64,7 +64,17 @@ def escape_typst(prose: str) -> str:
     """Plain text -> Typst markup that shows exactly that text."""
     text = "".join("\\" + ch if ch in _TYPST_ALWAYS else ch for ch in prose)
     text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
+    text = _DOTTED_UNIT.sub(_tight_unit, text)
     return _TYPST_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
+
+
+#: A word with a middle dot in it, a unit such as N·m or kg·m²: the body font's dot stands spaced
+#: ("N · m") where the key's math sets it tight, so the prose closes it up, in a box that never breaks.
+_DOTTED_UNIT = re.compile("\\S+\u00b7\\S+")  # not a spaced separator, " · "
+
+
+def _tight_unit(match: re.Match) -> str:
+    return "#box[" + match.group(0).replace("\u00b7", "#h(-0.2em)\u00b7#h(-0.2em)") + "]"
 
 
 def escape_markdown(prose: str) -> str:
