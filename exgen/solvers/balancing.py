@@ -51,8 +51,10 @@ def static_balance(p, d):
 
 def _removal(d, name: str, symbol: str) -> None:
     """Where the same m·r may be taken off instead of added: half a turn from the balancing mass."""
-    d.step(f"{name}_remove", (d.value_of(name) + PI) % (2 * PI), "rad", symbol=symbol + r"^{\mathrm{rem}}",
-           formula=rf"@{name} + \pi", note="or remove the same m·r half a turn round")
+    angle = d.value_of(name)
+    sign, value = ("-", angle - PI) if angle >= PI else ("+", angle + PI)
+    d.step(f"{name}_remove", value, "rad", symbol=symbol + r"^{\mathrm{rem}}",
+           formula=rf"@{name} {sign} 180^\circ", note="or remove the same m·r half a turn round")
 
 
 def _plane(d, tag: str, m_name: str, r_name: str, l_value: float, l_formula: str, l_note: str = "",
