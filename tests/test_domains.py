@@ -17,7 +17,7 @@ def test_a_fraction_typed_for_a_percentage_is_warned_about(capsys):
     """`eta=0.9` was taken as 0.9 % without a word."""
     assert main([*GEAR_PAIR, "--set", "eta=0.9"]) == 0
     err = capsys.readouterr().err
-    assert "eta=0.9 is read as 0.9 %" in err and "draws 80 to 98 %" in err
+    assert "eta=0.9 is read as 0.9 %" in err and "draws 95 to 98 %" in err  # a spur pair, 95-98 %
     assert "for the fraction write 90%" in err
 
 
