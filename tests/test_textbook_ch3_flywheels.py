@@ -16,18 +16,9 @@ import math
 
 import pytest
 
-from exgen.solve import solve
+from textbook_helpers import answers, steps
 
 W = 2 * math.pi / 60  # rad/s per rpm
-
-
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {part: answer.value for part, answer in variant.answers.items()}, variant, warnings
-
-
-def steps(variant):
-    return {s.name: s.value for s in variant.steps}
 
 
 EXAMPLE_3_1 = dict(a1="295 mm^2", a2="685 mm^2", a3="40 mm^2", a4="340 mm^2", a5="960 mm^2", first="above",

@@ -21,19 +21,10 @@ import math
 
 import pytest
 
-from exgen.solve import solve
+from textbook_helpers import answers, steps
 
 G = 9.81
 W = 2 * math.pi / 60  # rad/s per rpm
-
-
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {part: answer.value for part, answer in variant.answers.items()}, variant, warnings
-
-
-def steps(variant):
-    return {s.name: s.value for s in variant.steps}
 
 
 def test_problem_4_1_watt(bank):
