@@ -59,10 +59,10 @@ def turning_moment_equation(p, d):
     first, second = single_harmonic_crossings(p.b, p.c, n)
     d.step("theta_1", first, "rad", symbol=r"\theta_1", formula="",
            note=rf"$T = T_0$ where $\tan {n}\theta = -c/b$: the loop above the mean line starts")
-    d.step("theta_2", second, "rad", symbol=r"\theta_2", formula=rf"@theta_1 + \frac{{\pi}}{{{n}}}", note="and ends")
+    d.step("theta_2", second, "rad", symbol=r"\theta_2", formula=rf"@theta_1 + \frac{{180^\circ}}{{{n}}}", note="and ends")
     delta_e = d.step("dE", single_harmonic_swing(p.b, p.c, n), "J", symbol=r"\Delta E",
                      formula=rf"\frac{{2\sqrt{{@b^2 + @c^2}}}}{{{n}}}",
-                     note=rf"the loop above the mean line, $\int_{{\theta_1}}^{{\theta_2}} (b \sin {n}\theta + c \cos {n}\theta)\,d\theta$")
+                     note=rf"the work of the loop above the mean line: $b \sin {n}\theta + c \cos {n}\theta$ integrated from θ₁ to θ₂")
     cs = _band(p, d)
     inertia = d.step("I", fw.inertia_for(delta_e, w, cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}")
     d.mistake("I", "plus_minus_read_as_total", delta_e / (w ** 2 * p.band))
@@ -86,19 +86,20 @@ def fluctuating_resistance(p, d):
     d.mistake("P", "rpm_as_rad_s", p.T0 * w / RPM)
     delta_1 = d.step("dE_1", single_harmonic_swing(p.b, 0.0, n), "J", symbol=r"\Delta E_1",
                      formula=rf"\frac{{2\,@b}}{{{n}}}",
-                     note=rf"(i) constant resisting torque: one loop of the sine, $\int_0^{{\pi/{n}}} b \sin {n}\theta\,d\theta$")
+                     note=rf"(i) constant resisting torque: one loop of the sine, $b \sin {n}\theta$ integrated over 180°/{n}")
     cs1 = d.step("Cs_1", fw.coefficient_of_fluctuation(delta_1, p.I, w), "", symbol=r"C_{s1}",
                  formula=r"\frac{@dE_1}{@I\,@N^2}")
     d.mistake("Cs_1", "half_band", cs1 / 2)
     d.mistake("Cs_1", "rpm_as_rad_s", delta_1 / (p.I * (w / RPM) ** 2))
     engine = TrigTorque(p.T0, ((n, p.b, 0.0),))
     swing = energy_swing(engine, TrigTorque(p.T0, ((1, p.r, 0.0),)))
-    energy = rf"\frac{{@b}}{{{n}}}(1 - \cos {n}\,THETA) - @r\,(1 - \cos THETA)"
     for k, (theta, e) in enumerate(swing.crossings, start=1):
-        d.step(f"theta_{k}", theta, "rad", symbol=rf"\theta_{k}", formula="",
-               note="(ii) crossings, where engine and resisting torque are equal" if k == 1 else "")
-        d.step(f"E_{k}", e, "J", symbol=rf"E_{k}", formula=energy.replace("THETA", f"@theta_{k}"),
-               note="energy above the resisting torque since θ = 0" if k == 1 else "")
+        d.step(f"theta_{k}", theta, "rad", symbol=rf"\theta_{k}")
+        d.step(f"E_{k}", e, "J", symbol=rf"E_{k}")
+    d.table(rf"(ii) Crossings, where the engine and resisting torques are equal, and the energy above the resisting "
+            rf"torque since $\theta = 0$: $E = \frac{{b}}{{{n}}}(1 - \cos {n}\theta) - r\,(1 - \cos\theta)$",
+            [("Crossing",), (r"$\theta$", "rad"), ("$E$", "J")],
+            [[str(k), f"@theta_{k}", f"@E_{k}"] for k in range(1, len(swing.crossings) + 1)])
     high = next(k for k, c in enumerate(swing.crossings, start=1) if c == swing.high)
     low = next(k for k, c in enumerate(swing.crossings, start=1) if c == swing.low)
     delta_2 = d.step("dE_2", swing.delta, "J", symbol=r"\Delta E_2", formula=rf"@E_{high} - @E_{low}",

@@ -37,11 +37,12 @@ def _crossings(p, d, count: int, name_extremes: bool) -> tuple[float, float]:
     signed = _loop_areas(p, count)
     levels = fw.crossing_energies(signed)
     letters = string.ascii_uppercase[: count + 1]
-    d.step("E_A", 0.0, "mm^2", formula="", note="the energy at A is taken as U = 0")
-    for i, area in enumerate(signed):
-        sign = "+" if area > 0 else "-"
-        d.step(f"E_{letters[i + 1]}", levels[i + 1], "mm^2", formula=rf"@E_{letters[i]} {sign} {abs(area):g}",
-               note="the cycle closes: back to the energy at A" if i == count - 1 else "")
+    for letter, level in zip(letters, levels):
+        d.step(f"E_{letter}", level, "mm^2")
+    d.table("Energy at each crossing, in mm² of the diagram, the energy at A taken as U = 0: each loop above "
+            "the mean line adds its area, each loop below takes it away; over the cycle they balance",
+            [("Crossing",), ("Loop before it", "mm^2"), ("Energy above U", "mm^2")],
+            [[letter, signed[i - 1] if i else None, f"@E_{letter}"] for i, letter in enumerate(letters)])
     swing, high, low = fw.fluctuation_from_areas(signed)
     if name_extremes:
         ranked = sorted(levels[:-1], reverse=True)

@@ -20,6 +20,7 @@ RPM = 2 * math.pi / 60
 def hartnell_two_springs(p, d):
     """Example 4.3: the sleeve starts to rise at a speed; the force and stiffness of a second spring
     acting on the sleeve through a lever, the first spring's stiffness known."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     r0 = d.step("r_0", p.b + p.c, "m", formula=r"@b + @c", note="ball radius with the ball arm vertical")
     theta = d.step("theta_1", gv.bell_crank_angle(p.r1, r0, p.a), "rad", symbol=r"\theta_1",
                    formula=r"\sin^{-1}\frac{@r1 - @r_0}{@a}", note="the bell crank's turn")
@@ -27,7 +28,7 @@ def hartnell_two_springs(p, d):
     p1 = d.step("P_1", p.K1 * x1, "N", formula=r"@K1\,@x_1")
     force = d.step("F_1", p.m * p.N ** 2 * p.r1, "N", formula=r"@m\,@N^2\,@r1")
     sleeve = d.step("P_2s", gv.hartnell_sleeve_force(force, p.a, p.b) - p.Ms * G - p1 - p.f, "N", symbol=r"P_2'",
-                    formula=r"\frac{2\,@F_1\,@a\cos @theta_1}{@b\cos @theta_1} - @Ms\,(9.81) - @P_1 - @f",
+                    formula=r"\frac{2\,@F_1\,@a\cos @theta_1}{@b\cos @theta_1} - @Ms\,@g - @P_1 - @f",
                     note=r"moments about the fulcrum: $\tfrac{1}{2}(m_s g + P_1 + P_2' + f)\,b\cos\theta = F a\cos\theta$; friction resists the rise")
     d.require(sleeve > 0, "no pull is left for the second spring")
     tension = d.step("P_2", sleeve * p.L1 / p.L2, "N", formula=r"@P_2s\,\frac{@L1}{@L2}",
@@ -46,12 +47,13 @@ def hartnell_two_springs(p, d):
 
 def hartnell_spring(p, d):
     """A Hartnell governor between two radii and speeds: the spring force at each, and the spring's stiffness."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     forces = []
     for tag, r_name, w_name in (("1", "r1", "N1"), ("2", "r2", "N2")):
         r, w = getattr(p, r_name), getattr(p, w_name)
         force = d.step(f"F_{tag}", p.m * w ** 2 * r, "N", symbol=rf"F_{tag}", formula=rf"@m\,@{w_name}^2\,@{r_name}")
         spring = d.step(f"S_{tag}", gv.hartnell_sleeve_force(force, p.a, p.b) - p.M * G - p.f, "N", symbol=rf"S_{tag}",
-                        formula=rf"\frac{{2\,@F_{tag}\,@a}}{{@b}} - @M\,(9.81) - @f",
+                        formula=rf"\frac{{2\,@F_{tag}\,@a}}{{@b}} - @M\,@g - @f",
                         note=r"moments about the fulcrum: $F a = \tfrac{1}{2}(M g + S + f)\,b$; the sleeve is rising" if tag == "1" else "")
         record_apart(d, f"S_{tag}", "friction_wrong_side", spring, spring + 2 * p.f)
         record_apart(d, f"S_{tag}", "arms_inverted", spring, gv.hartnell_sleeve_force(force, p.b, p.a) - p.M * G - p.f)
@@ -82,7 +84,7 @@ def spring_controlled(p, d):
                     formula=r"\frac{@b_F}{@m\,@N^2 - @k_F}", note=r"where $m\omega^2 r = a r + b$")
     d.require(0.5 * p.r1 <= radius <= 1.5 * p.r2, "the speed puts the balls far outside their range")
     d.mistake("r", "rpm_as_rad_s", gv.radius_at_speed(p.m, p.N / RPM, slope, intercept))
-    d.step("change", abs(intercept), "N", symbol=r"|b|", formula=r"|@b_F|",
+    d.step("change", abs(intercept), "N", symbol=r"\Delta F", formula=r"-@b_F" if intercept < 0 else r"@b_F",
            note="shift the line through the origin: the spring load changes by |b| at every radius")
     d.step("way", "increase" if intercept < 0 else "decrease", "", symbol=r"\text{spring load}",
            note="b < 0: add |b| to every force" if intercept < 0 else "b > 0: take b off every force")

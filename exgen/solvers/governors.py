@@ -34,9 +34,10 @@ def record_apart(d, step: str, name: str, right: float, wrong: float, rel: float
 def watt_height(p, d):
     """Problem 4.1: the height of a Watt governor at a speed, how far it falls when the speed rises,
     and the angle of its arms."""
-    h1 = d.step("h_1", gv.watt_height(p.N1), "m", formula=r"\frac{9.81}{@N1^2}", note="eq 4.1 with the arms pivoted on the axis")
+    d.constant("g", G, "m/s^2", note="standard gravity")
+    h1 = d.step("h_1", gv.watt_height(p.N1), "m", formula=r"\frac{@g}{@N1^2}", note="eq 4.1 with the arms pivoted on the axis")
     d.mistake("h_1", "rpm_as_rad_s", G / (p.N1 / RPM) ** 2)
-    h2 = d.step("h_2", gv.watt_height(p.N2), "m", formula=r"\frac{9.81}{@N2^2}")
+    h2 = d.step("h_2", gv.watt_height(p.N2), "m", formula=r"\frac{@g}{@N2^2}")
     d.step("dh", h1 - h2, "m", symbol=r"h_1 - h_2", formula=r"@h_1 - @h_2", note="the balls rise as the speed rises")
     d.mistake("dh", "rpm_as_rad_s", G / (p.N1 / RPM) ** 2 - G / (p.N2 / RPM) ** 2)
     d.mistake("dh", "height_not_change", h2)
@@ -67,12 +68,12 @@ def _position(p, d, linkage: gv.Linkage, tag: str, r_name: str, r: float, sleeve
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}", formula=rf"@l\cos @beta_{tag}",
                note="height of the ball above the sleeve pivots")
         d.step(f"IZ_{tag}", arms.IZ, "m", symbol=rf"IZ_{tag}", formula=rf"@XZ_{tag}\tan @alpha_{tag}")
-    d.step(f"IY_{tag}", arms.IY, "m", symbol=rf"IY_{tag}",
-           formula=rf"@l\cos @beta_{tag}\tan @alpha_{tag} + @{r_name} - @e_l")
-    d.step(f"F_{tag}", gv.centrifugal_force(p.m, sleeve_force, arms), "N", symbol=rf"F_{tag}",
-           formula=rf"\frac{{@m\,(9.81)\,@IZ_{tag} + \tfrac{{1}}{{2}}({sleeve_formula})\,@IY_{tag}}}{{@XZ_{tag}}}",
-           note="moments about I: F·XZ = m g·IZ + ½(sleeve force)·IY")
     ball = "x_" + tag if extension else r_name
+    d.step(f"IY_{tag}", arms.IY, "m", symbol=rf"IY_{tag}", formula=rf"@IZ_{tag} + @{ball} - @e_l",
+           note="I to the sleeve pivot")
+    d.step(f"F_{tag}", gv.centrifugal_force(p.m, sleeve_force, arms), "N", symbol=rf"F_{tag}",
+           formula=rf"\frac{{@m\,@g\,@IZ_{tag} + \tfrac{{1}}{{2}}({sleeve_formula})\,@IY_{tag}}}{{@XZ_{tag}}}",
+           note="moments about I: F·XZ = m g·IZ + ½(sleeve force)·IY")
     w = d.step(f"omega_{tag}", gv.equilibrium_speed(p.m, sleeve_force, arms), "rad/s", symbol=rf"\omega_{tag}",
                formula=rf"\sqrt{{\frac{{@F_{tag}}}{{@m\,@{ball}}}}}", note="F = m ω² r")
     return w, arms
@@ -96,9 +97,10 @@ def _within(d, linkage: gv.Linkage, *radii: float) -> None:
 
 def porter_speed_range(p, d):
     """Problem 4.2: the range of speed between the extreme radii of a Porter governor, and its sleeve travel."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = _linkage(p)
     _within(d, linkage, p.r1, p.r2)
-    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,(9.81)", note="the sleeve load")
+    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,@g", note="the sleeve load")
     w1, _ = _position(p, d, linkage, "1", "r1", p.r1, load, "@W_s", note="at the least radius")
     w2, _ = _position(p, d, linkage, "2", "r2", p.r2, load, "@W_s", note="at the greatest radius")
     d.step("range", w2 - w1, "rad/s", symbol=r"\omega_2 - \omega_1", formula=r"@omega_2 - @omega_1")
@@ -120,15 +122,16 @@ def porter_speed_range(p, d):
 
 def porter_friction(p, d):
     """Problem 4.5: the equilibrium speed of a Porter governor at a radius, and the range friction at the sleeve allows."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = _linkage(p)
     _within(d, linkage, p.r)
-    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,(9.81)", note="the sleeve load")
+    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,@g", note="the sleeve load")
     w, arms = _position(p, d, linkage, "0", "r", p.r, load, "@W_s", note="without friction")
     rising = d.step("omega_up", gv.equilibrium_speed(p.m, load + p.f, arms), "rad/s", symbol=r"\omega_{\max}",
-                    formula=r"\sqrt{\frac{@m\,(9.81)\,@IZ_0 + \tfrac{1}{2}(@W_s + @f)\,@IY_0}{@m\,@r\,@XZ_0}}",
+                    formula=r"\sqrt{\frac{@m\,@g\,@IZ_0 + \tfrac{1}{2}(@W_s + @f)\,@IY_0}{@m\,@r\,@XZ_0}}",
                     note="about to rise: friction adds to the sleeve load")
     falling = d.step("omega_down", gv.equilibrium_speed(p.m, load - p.f, arms), "rad/s", symbol=r"\omega_{\min}",
-                     formula=r"\sqrt{\frac{@m\,(9.81)\,@IZ_0 + \tfrac{1}{2}(@W_s - @f)\,@IY_0}{@m\,@r\,@XZ_0}}",
+                     formula=r"\sqrt{\frac{@m\,@g\,@IZ_0 + \tfrac{1}{2}(@W_s - @f)\,@IY_0}{@m\,@r\,@XZ_0}}",
                      note="about to fall: friction relieves it")
     d.step("range", rising - falling, "rad/s", symbol=r"\omega_{\max} - \omega_{\min}", formula=r"@omega_up - @omega_down")
     d.mistake("omega_up", "friction_wrong_side", falling)
@@ -141,6 +144,7 @@ def porter_friction(p, d):
 
 def porter_sleeve_friction(p, d):
     """Problem 4.4: friction from the speed at which the sleeve starts to rise; the speeds at another angle."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = gv.Linkage(p.l, p.l, p.e, p.e)
     start = gv.pose_at_angle(linkage, p.alpha0)
     arms0 = gv.lever_arms(linkage, start)
@@ -149,7 +153,7 @@ def porter_sleeve_friction(p, d):
     iz0 = d.step("IZ_0", arms0.IZ, "m", symbol=r"IZ_0", formula=r"@l\sin @alpha0", note="IY = 2 IZ: equal arms and offsets")
     force0 = d.step("F_0", p.m * p.N0 ** 2 * r0, "N", symbol=r"F_0", formula=r"@m\,@N0^2\,@r_0")
     friction = d.step("f", gv.sleeve_friction(force0, p.m, p.M, arms0), "N", symbol=r"f",
-                      formula=r"\frac{@F_0\,@h_0 - @m\,(9.81)\,@IZ_0}{@IZ_0} - @M\,(9.81)",
+                      formula=r"\frac{@F_0\,@h_0 - @m\,@g\,@IZ_0}{@IZ_0} - @M\,@g",
                       note="the sleeve begins to rise: F₀h = m g·IZ + (M g + f)·IZ")
     d.mistake("f", "friction_wrong_side", -friction)
     d.mistake("f", "rpm_as_rad_s", gv.sleeve_friction(p.m * (p.N0 / RPM) ** 2 * r0, p.m, p.M, arms0))
@@ -160,10 +164,10 @@ def porter_sleeve_friction(p, d):
     d.step("h_1", arms1.XZ, "m", formula=r"@l\cos @alpha1")
     d.step("IZ_1", arms1.IZ, "m", symbol=r"IZ_1", formula=r"@l\sin @alpha1")
     up = d.step("omega_up", gv.equilibrium_speed(p.m, p.M * G + friction, arms1), "rad/s", symbol=r"\omega_{\max}",
-                formula=r"\sqrt{\frac{(@m\,(9.81) + @M\,(9.81) + @f)\,@IZ_1}{@m\,@r_1\,@h_1}}",
+                formula=r"\sqrt{\frac{(@m\,@g + @M\,@g + @f)\,@IZ_1}{@m\,@r_1\,@h_1}}",
                 note="rising: friction adds to the sleeve load")
     down = d.step("omega_down", gv.equilibrium_speed(p.m, p.M * G - friction, arms1), "rad/s", symbol=r"\omega_{\min}",
-                  formula=r"\sqrt{\frac{(@m\,(9.81) + @M\,(9.81) - @f)\,@IZ_1}{@m\,@r_1\,@h_1}}",
+                  formula=r"\sqrt{\frac{(@m\,@g + @M\,@g - @f)\,@IZ_1}{@m\,@r_1\,@h_1}}",
                   note="falling: friction relieves it")
     d.mistake("omega_up", "friction_wrong_side", down)
     d.mistake("omega_down", "friction_wrong_side", up)
@@ -173,6 +177,7 @@ def porter_sleeve_friction(p, d):
 
 def porter_dead_load(p, d):
     """Example 4.1: the central load for a speed at a given arm angle, and the sensitivity for a sleeve travel ±x."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = gv.Linkage(p.l, p.l, p.e, p.e)
     mid = gv.pose_at_angle(linkage, p.alpha)
     arms = gv.lever_arms(linkage, mid)
@@ -181,7 +186,7 @@ def porter_dead_load(p, d):
     r = d.step("r", iz + p.e, "m", formula=r"@IZ + @e")
     force = d.step("F", p.m * p.N ** 2 * r, "N", formula=r"@m\,@N^2\,@r")
     load = d.step("M", (force * h - p.m * G * iz) / (G * iz), "kg", symbol=r"M",
-                  formula=r"\frac{@F\,@h - @m\,(9.81)\,@IZ}{(9.81)\,@IZ}",
+                  formula=r"\frac{@F\,@h - @m\,@g\,@IZ}{@g\,@IZ}",
                   note=r"moments about I: $F\cdot XZ = m g\cdot IZ + \tfrac{1}{2} M g\cdot IY$")
     d.mistake("M", "rpm_as_rad_s", (p.m * (p.N / RPM) ** 2 * r * h - p.m * G * iz) / (G * iz))
     d.mistake("M", "sleeve_moment_arm", 2 * (force * h - p.m * G * iz) / (G * iz))
@@ -196,7 +201,7 @@ def porter_dead_load(p, d):
         izk = d.step(f"IZ_{tag}", math.sqrt(p.l ** 2 - hk ** 2), "m", symbol=rf"IZ_{tag}", formula=rf"\sqrt{{@l^2 - @h_{tag}^2}}")
         rk = d.step(f"r_{tag}", izk + p.e, "m", formula=rf"@IZ_{tag} + @e")
         w = d.step(f"omega_{tag}", math.sqrt((p.m + load) * G * izk / (p.m * rk * hk)), "rad/s", symbol=rf"\omega_{tag}",
-                   formula=rf"\sqrt{{\frac{{(@m + @M)\,(9.81)\,@IZ_{tag}}}{{@m\,@r_{tag}\,@h_{tag}}}}}",
+                   formula=rf"\sqrt{{\frac{{(@m + @M)\,@g\,@IZ_{tag}}}{{@m\,@r_{tag}\,@h_{tag}}}}}",
                    note=rf"$F_{tag}\,h_{tag} = (m + M) g\,IZ_{tag}$")
         wrong_h = h + sign * p.x
         if 0 < wrong_h < p.l:
@@ -213,6 +218,7 @@ def porter_dead_load(p, d):
 
 def proell_extension(p, d):
     """Example 4.2: the length of a Proell governor's vertical extension for a speed, and the upper-arm tension."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = gv.Linkage(p.l, p.l, p.e, p.e)
     d.require(linkage.radius_range[0] < p.r < linkage.radius_range[1], "the arms cannot reach that radius")
     mid = gv.pose(linkage, p.r)
@@ -222,13 +228,13 @@ def proell_extension(p, d):
     bz = d.step("BZ", mid.h_lower, "m", symbol=r"BZ", formula=r"\sqrt{@l^2 - @IZ^2}")
     force = d.step("F", p.m * p.N ** 2 * p.r, "N", formula=r"@m\,@N^2\,@r")
     ext = d.step("AB", (p.m + p.M) * G * iz / force - bz, "m", symbol=r"AB",
-                 formula=r"\frac{(@m + @M)\,(9.81)\,@IZ}{@F} - @BZ",
+                 formula=r"\frac{(@m + @M)\,@g\,@IZ}{@F} - @BZ",
                  note=r"moments about I: $F\,(AB + BZ) = m g\cdot IZ + \tfrac{1}{2} M g\cdot IC$")
     d.mistake("AB", "rpm_as_rad_s", (p.m + p.M) * G * iz / (p.m * (p.N / RPM) ** 2 * p.r) - bz)
     d.mistake("AB", "sleeve_moment_arm", (p.m + p.M / 2) * G * iz / force - bz)
     d.require(0.15 * p.l <= ext <= 0.7 * p.l, "an extension of unusual length")
     d.step("T", gv.upper_arm_tension(p.m, p.M * G, mid.alpha), "N", symbol=r"T_{BD}",
-                     formula=r"\frac{@m\,(9.81) + \tfrac{1}{2}\,@M\,(9.81)}{@BZ / @l}",
+                     formula=r"\frac{@m\,@g + \tfrac{1}{2}\,@M\,@g}{@BZ / @l}",
                      note="the arm's vertical pull carries the ball and half the sleeve: T cos θ = m g + M g/2")
     d.mistake("T", "whole_sleeve_load", (p.m * G + p.M * G) / math.cos(mid.alpha))
     d.mistake("T", "sine_for_cosine", (p.m * G + p.M * G / 2) / math.sin(mid.alpha))
@@ -236,9 +242,10 @@ def proell_extension(p, d):
 
 def proell_speeds(p, d):
     """Problem 4.3: a Proell governor's speeds at its least and greatest radii, the extensions vertical at the least."""
+    d.constant("g", G, "m/s^2", note="standard gravity")
     linkage = _linkage(p)
     _within(d, linkage, p.r1, p.r2)
-    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,(9.81)", note="the sleeve load")
+    load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,@g", note="the sleeve load")
     w1, _ = _position(p, d, linkage, "1", "r1", p.r1, load, "@W_s", extension=p.e,
                       note="least radius: the extension is vertical")
     tilt = gv.pose(linkage, p.r2).beta - gv.pose(linkage, p.r1).beta
