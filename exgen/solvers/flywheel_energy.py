@@ -37,7 +37,7 @@ def punching_press(p, d):
     w2 = d.step("omega_2", fw.speed_after(w1, given, p.I), "rad/s", symbol=r"\omega_2",
                 formula=r"\sqrt{@N^2 - \frac{2\,@dE}{@I}}", note=r"from $\Delta E = \tfrac{1}{2} I(\omega_1^2 - \omega_2^2)$")
     drop = d.step("drop", w1 - w2, "rad/s", symbol=r"\omega_1 - \omega_2", formula=r"@N - @omega_2")
-    d.require(0.02 <= drop / w1 <= 0.25, "a speed drop no press flywheel is sized for")
+    d.require(0.02 <= drop / w1 <= 0.2, "a speed drop no press flywheel is sized for")
     d.mistake("drop", "motor_ignored", w1 - fw.speed_after(w1, p.E, p.I))
     d.mistake("drop", "linearised", given / (p.I * w1))
     d.mistake("drop", "final_speed", w2)

@@ -79,16 +79,17 @@ def spring_controlled(p, d):
     d.step("kind", gv.stability(intercept, p.F2), "", symbol=r"\text{governor}",
            note="b < 0: the line cuts the force axis below the origin, F/r rises with r")
     d.mistake("kind", "stability_inverted", {gv.STABLE: gv.UNSTABLE, gv.UNSTABLE: gv.STABLE}.get(gv.stability(intercept, p.F2), gv.STABLE))
-    d.require(abs(intercept) >= 0.05 * p.F1, "a line too near the origin to tell stable from isochronous")
+    d.require(0.05 * p.F1 <= abs(intercept) <= 1.5 * p.F1, "a line too near the origin to tell stable from isochronous, or far from it")
     radius = d.step("r", gv.radius_at_speed(p.m, p.N, slope, intercept), "m",
                     formula=r"\frac{@b_F}{@m\,@N^2 - @k_F}", note=r"where $m\omega^2 r = a r + b$")
-    d.require(0.5 * p.r1 <= radius <= 1.5 * p.r2, "the speed puts the balls far outside their range")
+    d.require(0.4 * p.r1 <= radius <= 2 * p.r2, "the speed puts the balls far outside their range")
     d.mistake("r", "rpm_as_rad_s", gv.radius_at_speed(p.m, p.N / RPM, slope, intercept))
     d.step("change", abs(intercept), "N", symbol=r"\Delta F", formula=r"-@b_F" if intercept < 0 else r"@b_F",
            note="shift the line through the origin: the spring load changes by |b| at every radius")
     d.step("way", "increase" if intercept < 0 else "decrease", "", symbol=r"\text{spring load}",
            note="b < 0: add |b| to every force" if intercept < 0 else "b > 0: take b off every force")
     d.mistake("way", "opposite", "decrease" if intercept < 0 else "increase")
-    d.step("omega_iso", gv.isochronous_speed(p.m, slope), "rad/s", symbol=r"\omega_{\mathrm{iso}}",
+    iso = d.step("omega_iso", gv.isochronous_speed(p.m, slope), "rad/s", symbol=r"\omega_{\mathrm{iso}}",
            formula=r"\sqrt{\frac{@k_F}{@m}}", note="F = a r: m ω² r = a r at every radius")
     d.mistake("omega_iso", "mass_not_divided", math.sqrt(slope))
+    d.require(0.6 <= iso / p.N <= 1.6, "an isochronous speed far from the governor's running speed")

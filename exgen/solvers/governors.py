@@ -112,12 +112,12 @@ def porter_speed_range(p, d):
         arms = gv.lever_arms(linkage, gv.pose(linkage, r))
         d.mistake(f"omega_{tag}", "sleeve_moment_arm",
                   math.sqrt((p.m * G * arms.IZ + load / 2 * arms.IZ) / arms.XZ / (p.m * r)))
-    d.require(1.05 <= w2 / w1 <= 1.5, "a speed range no Porter governor is built for")
+    d.require(1.05 <= w2 / w1 <= 1.25, "a speed range no Porter governor is built for")
     lift = d.step("lift", gv.pose(linkage, p.r1).depth - gv.pose(linkage, p.r2).depth, "m", symbol=r"x",
                   formula=r"(@l\cos @alpha_1 + @l\cos @beta_1) - (@l\cos @alpha_2 + @l\cos @beta_2)",
                   note="how far the sleeve rises")
     d.mistake("lift", "one_arm_only", p.l * (math.cos(d.value_of("alpha_1")) - math.cos(d.value_of("alpha_2"))))
-    return lift
+    d.require(lift <= min(0.1, 0.35 * p.l), "a sleeve travel longer than governors are built with")
 
 
 def porter_friction(p, d):
