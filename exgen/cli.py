@@ -75,12 +75,14 @@ def _assignment_and_roster(args):
 
 
 def cmd_list(args) -> int:
+    from .render.unicode_math import text_to_plain
+
     bank = _bank(args)
     rows = [t for t in bank if args.chapter is None or t.chapter == args.chapter]
     width = max((len(t.id) for t in rows), default=0)
     for t in rows:
-        source = f"  [{t.source}]" if t.source else ""
-        print(f"{t.id:<{width}}  {t.title}{source}")
+        source = f"  [{text_to_plain(t.source)}]" if t.source else ""
+        print(f"{t.id:<{width}}  {text_to_plain(t.title)}{source}")
     print(f"\n{len(rows)} template(s)", file=sys.stderr)
     return 0
 
@@ -98,6 +100,7 @@ def cmd_show(args) -> int:
 
 
 def cmd_solve(args) -> int:
+    from .render.unicode_math import text_to_plain
     from .solve import parse_settings, solve
 
     template = _bank(args).get(args.id)
@@ -112,13 +115,16 @@ def cmd_solve(args) -> int:
 
         print(variant_text(variant, key=True))
         return 0
-    print(template.title)
+    print(text_to_plain(template.title))
     for part_id, answer in variant.answers.items():
-        print(f"  ({part_id}) {variant.asks[part_id]}: {answer.text}")
+        print(f"  ({part_id}) {text_to_plain(variant.asks[part_id])}: {answer.text}")
     return 0
 
 
 def solution_json(variant) -> dict:
+    """Every part's value and unit, and every step's: its ask as plain text (and as written, with LaTeX)."""
+    from .render.unicode_math import text_to_plain
+
     def plain(value):
         return value if isinstance(value, (int, float, str)) else str(value)
 
@@ -126,7 +132,8 @@ def solution_json(variant) -> dict:
         "template": variant.template.id,
         "given": {p.name: {"value": p.text, "unit": p.unit} for p in variant.params},
         "parts": {
-            part_id: {"ask": variant.asks[part_id], "value": plain(a.value), "unit": a.part.unit, "text": a.text}
+            part_id: {"ask": text_to_plain(variant.asks[part_id]), "ask_latex": variant.asks[part_id],
+                      "value": plain(a.value), "unit": a.part.unit, "text": a.text}
             for part_id, a in variant.answers.items()
         },
         "steps": [{"name": s.name, "value": plain(s.value), "unit": s.unit} for s in variant.steps],

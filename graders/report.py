@@ -6,11 +6,12 @@ student typed is shortened and escaped wherever it lands (a Markdown page may en
 from __future__ import annotations
 
 import csv
-import html
+import re
 from collections import Counter
 from pathlib import Path
 
 from exgen.outdir import check_target, replacing
+from exgen.render.unicode_math import text_to_plain
 
 from .echo import shown
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
@@ -26,6 +27,7 @@ QUOTED_WORD = 48
 NOTES_SHOWN = 10
 COMMON_MISTAKES = 3
 _LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
+_ENTITY = re.compile(r"&(?=#?\w+;)")  # "&lt;" typed as text would show as "<" in HTML
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
 KIND = "grade"  # the marker a folder of grading results carries (exgen.outdir)
 
@@ -115,8 +117,11 @@ def _where(path: Path, base: Path | None) -> str:
 
 
 def _escape(text: str, limit: int = MESSAGE_LENGTH) -> str:
-    """Any text on a page (messages quote what students typed): one line, capped, HTML-escaped."""
-    return html.escape(shown(text, limit, word=QUOTED_WORD), quote=False)
+    """Any text on a page (messages quote what students typed): its math in plain Unicode, one line,
+    capped, and harmless as Markdown and as HTML without writing entities a reader of the file would
+    see (the page shows ‹stream end›, not &lt;stream end&gt;)."""
+    text = shown(text_to_plain(str(text)), limit, word=QUOTED_WORD).translate(_LOOK_ALIKES)
+    return _ENTITY.sub("\uff06", text)
 
 
 def _sentence(message: str) -> str:

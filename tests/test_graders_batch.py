@@ -127,7 +127,7 @@ def test_results_written(bank, handed_in, tmp_path):
     assert {r["status"] for r in rows} == {GRADED, UNREADABLE_FILE, NO_SUBMISSION}
     feedback = {p.stem: p.read_text(encoding="utf-8") for p in paths["feedback"].glob("*.md")}
     assert set(feedback) == {s.id for s in ROSTER}
-    assert "\u2713" in feedback["s000"] and "<b>" not in feedback["s000"] and "&lt;b&gt;" in feedback["s000"]
+    assert "\u2713" in feedback["s000"] and "<b>" not in feedback["s000"] and "\u2039b\u203a" in feedback["s000"]
     assert "'m' is a length, but an angle is asked" in feedback["s003"]
     assert "No answer file" in feedback["s005"]
     report = paths["report"].read_text(encoding="utf-8")

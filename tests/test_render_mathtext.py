@@ -5,8 +5,8 @@ import pytest
 import typst
 
 from exgen.render.mathtext import (MathError, escape_markdown, escape_typst, latex_to_typst, split_math,
-                                   text_to_markdown, text_to_plain, text_to_typst, typst_string)
-from exgen.render.unicode_math import latex_to_unicode
+                                   text_to_markdown, text_to_typst, typst_string)
+from exgen.render.unicode_math import latex_to_unicode, text_to_plain
 
 
 @pytest.mark.parametrize("latex, expected", [

@@ -1,7 +1,7 @@
 """The terminal view of a variant."""
 import pytest
 
-from exgen.render.mathtext import text_to_plain
+from exgen.render.unicode_math import text_to_plain
 from exgen.render.text import variant_text
 from exgen.variant import make_variant
 

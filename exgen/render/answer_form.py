@@ -19,6 +19,7 @@ import yaml
 
 from ..answertypes import answer_type
 from ..assignment import Sheet
+from .unicode_math import text_to_plain
 
 #: Characters YAML forbids or reads as line breaks; a comment must hold none of them.
 _NOT_IN_COMMENT = re.compile("[^\x09\x20-\x7e\xa0-\u2027\u202a-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
@@ -51,9 +52,9 @@ def answer_form(sheet: Sheet) -> str:
     lines.append("answers:")
     for question in sheet.questions:
         template = question.variant.template
-        lines.append(f"  {_key(question.slot)}:   # Q{question.number}. {_comment(template.title)}")
+        lines.append(f"  {_key(question.slot)}:   # Q{question.number}. {_comment(text_to_plain(template.title))}")
         for part in template.parts:
-            ask = _short_ask(question.variant.asks.get(part.id, part.ask))
+            ask = _short_ask(text_to_plain(question.variant.asks.get(part.id, part.ask)))
             hint = answer_type(part).form_hint(part)
             lines.append(f"    {_key(part.id)}: \"\"   # {_comment(ask)} [{_comment(hint)}]")
     return "\n".join(lines) + "\n"

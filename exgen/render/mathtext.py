@@ -13,10 +13,8 @@ from functools import lru_cache
 import tex2typst
 
 from ..errors import ExgenError
-from .unicode_math import latex_to_unicode
+from .unicode_math import split_math, unescape_dollars
 
-# A math span: an unescaped $ ... unescaped $ (a literal dollar is written \$).
-MATH_SPAN = re.compile(r"(?<!\\)\$(.+?)(?<!\\)\$", re.DOTALL)
 
 _TYPST_ALWAYS = set("\\#*_$`<>@[]~")
 _TYPST_LINE_START = re.compile(r"^([ \t]*)([=+\-/]|\d+\.(?=\s|$))", re.MULTILINE)
@@ -41,23 +39,6 @@ def latex_to_typst(latex: str) -> str:
         return tex2typst.tex2typst(latex)
     except ValueError as exc:
         raise MathError(latex, str(exc).splitlines()[0]) from None
-
-
-def split_math(text: str) -> list[tuple[bool, str]]:
-    """[(is_math, chunk), ...] in order; prose chunks keep their \\$ escapes."""
-    out, at = [], 0
-    for match in MATH_SPAN.finditer(text):
-        if match.start() > at:
-            out.append((False, text[at:match.start()]))
-        out.append((True, match.group(1).strip()))
-        at = match.end()
-    if at < len(text):
-        out.append((False, text[at:]))
-    return out
-
-
-def _unescape_dollars(prose: str) -> str:
-    return prose.replace("\\$", "$")
 
 
 def escape_typst(prose: str) -> str:
@@ -90,19 +71,13 @@ def _escape_marker(marker: str) -> str:
 
 def text_to_typst(text: str) -> str:
     """A statement or ask with $LaTeX$ spans -> Typst markup with $Typst math$."""
-    return "".join(f"${latex_to_typst(chunk)}$" if is_math else escape_typst(_unescape_dollars(chunk))
+    return "".join(f"${latex_to_typst(chunk)}$" if is_math else escape_typst(unescape_dollars(chunk))
                    for is_math, chunk in split_math(text))
 
 
 def text_to_markdown(text: str) -> str:
     """A statement or ask with $LaTeX$ spans -> Markdown, the math kept as $LaTeX$."""
-    return "".join(f"${chunk}$" if is_math else escape_markdown(_unescape_dollars(chunk))
-                   for is_math, chunk in split_math(text))
-
-
-def text_to_plain(text: str) -> str:
-    """A statement or ask for the terminal: math spans as Unicode."""
-    return "".join(latex_to_unicode(chunk) if is_math else _unescape_dollars(chunk)
+    return "".join(f"${chunk}$" if is_math else escape_markdown(unescape_dollars(chunk))
                    for is_math, chunk in split_math(text))
 
 

@@ -11,8 +11,8 @@ from functools import lru_cache
 
 from .. import units
 from .formula import terms, write
-from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_plain, text_to_typst
-from .unicode_math import latex_to_unicode
+from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_typst
+from .unicode_math import latex_to_unicode, text_to_plain
 
 SIG = 4
 _EXPONENT = re.compile(r"^(-?[\d.]+)e(-?\d+)$")

@@ -1,4 +1,5 @@
-"""LaTeX math -> plain Unicode for the terminal: θ = π − 2α, T₁/T₂ = e^(μθ), sin⁻¹((r₂ − r₁)/X).
+"""LaTeX math -> plain Unicode for the terminal and plain files: θ = π − 2α, T₁/T₂ = e^(μθ), sin⁻¹((r₂ − r₁)/X);
+text with $...$ math spans -> the same text with its math so written (text_to_plain).
 
 Covers what templates and solvers write (fractions, roots, sub- and superscripts, Greek,
 \\mathrm, \\text, \\operatorname, \\left/\\right, spacing); an unknown command prints its name.
@@ -29,6 +30,8 @@ TEXT_COMMANDS = {"mathrm", "text", "textrm", "operatorname", "mathit", "mathbf",
 DROPPED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "textstyle", "limits"}
 SUPER = dict(zip("0123456789+-=()nix", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱˣ"))
 SUB = dict(zip("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
+# A math span: an unescaped $ ... unescaped $ (a literal dollar is written \$).
+MATH_SPAN = re.compile(r"(?<!\\)\$(.+?)(?<!\\)\$", re.DOTALL)
 _TOKEN = re.compile(r"\\([A-Za-z]+|.)|([{}^_])|(\s+)|(.)", re.DOTALL)
 
 
@@ -174,3 +177,26 @@ def latex_to_unicode(latex: str) -> str:
     text = _Parser(_tokens(latex)).sequence()
     text = re.sub(r" {2,}", " ", text).strip()
     return text.replace("( ", "(").replace(" )", ")")
+
+
+def split_math(text: str) -> list[tuple[bool, str]]:
+    """[(is_math, chunk), ...] in order; prose chunks keep their \\$ escapes."""
+    out, at = [], 0
+    for match in MATH_SPAN.finditer(text):
+        if match.start() > at:
+            out.append((False, text[at:match.start()]))
+        out.append((True, match.group(1).strip()))
+        at = match.end()
+    if at < len(text):
+        out.append((False, text[at:]))
+    return out
+
+
+def unescape_dollars(prose: str) -> str:
+    return prose.replace("\\$", "$")
+
+
+def text_to_plain(text: str) -> str:
+    """A statement or ask for the terminal: math spans as Unicode."""
+    return "".join(latex_to_unicode(chunk) if is_math else unescape_dollars(chunk)
+                   for is_math, chunk in split_math(text))
