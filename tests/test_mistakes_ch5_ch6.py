@@ -15,7 +15,10 @@ def chapter_5_and_6(bank):
 
 
 def as_text(value, part):
-    return value if isinstance(value, str) else units.format_quantity(value, part.unit, 6)
+    """What a student would type for a recorded value: a word, a formula, or a number in the asked unit."""
+    if isinstance(value, (int, float)):
+        return units.format_quantity(value, part.unit, 6)
+    return str(value)
 
 
 def grade(variant, part_id, text):
