@@ -166,7 +166,7 @@ def test_compound_train_of_example_1_7_to_scale(bank):
                      if "shaft" in line.get("class", "").split()})
     assert shafts[-1] - shafts[0] == pytest.approx(6.75 * heights[0], rel=2e-3)  # C = 6.75 in, d2 = 1 in
     labels = texts(svg)
-    for expected in ("t\u2082 = 12", "Pd = 12 /in", "d\u2083 = 2.5 in", "1800 rpm clockwise", "\u03c9\u2087 = ?", "C = ?"):
+    for expected in ("t\u2082 = 12", "Pd = 12 teeth/in", "d\u2083 = 2.5 in", "1800 rpm clockwise", "\u03c9\u2087 = ?", "C = ?"):
         assert expected in labels
 
 

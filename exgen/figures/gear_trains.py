@@ -72,7 +72,7 @@ def compound_train(variant) -> str:
 
     def pitch(name):
         value = shown(variant, name)
-        return f"Pd = {value.si * inch:g} /in" if value is not None else ""
+        return f"Pd = {value.si * inch:g} teeth/in" if value is not None else ""  # as the statement writes it
 
     def teeth(name):
         return f"{subscripted(name)} = {shown(variant, name).value_text}"

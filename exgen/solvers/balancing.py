@@ -267,7 +267,10 @@ def correction_plane_position(p, d):
     for i in (1, 2, 3):
         mr, l = _plane(d, str(i), f"m{i}", f"r{i}", getattr(p, f"z{i}"), rf"@z{i}")
         rows.append((mr, l, getattr(p, f"theta{i}")))
-    mx, my = components(d, "M", "M", [(f"mrl{i}", f"theta{i}") for i in (1, 2, 3)], "kg*m^2", "moments about X")
+    mx, my = components(d, "M", "M", [(f"mrl{i}", f"theta{i}") for i in (1, 2, 3)], "kg*m^2", "moments about X",
+                        table=("Planes, with X as the reference: moments", PLANE,
+                               _planes("123", ("m1", "m2", "m3"), ("r1", "r2", "r3"), ("theta1", "theta2", "theta3")),
+                               "m r l"))
     moment = d.step("MQ", math.hypot(mx, my), "kg*m^2", symbol=r"B_1 b_1 x", formula=magnitude_formula("M_0", "M_90"),
                     note="the moment the correction must supply about X")
     theta_q = closing_angle(d, "theta_Q", r"\theta_{B_1}", "M_0", "M_90")
@@ -276,7 +279,9 @@ def correction_plane_position(p, d):
     d.require(0.1 <= x <= 1.2 * max(p.z1, p.z2, p.z3), "the correction's plane would lie off the shaft")
     d.require(min(abs(x - getattr(p, f"z{i}")) for i in (1, 2, 3)) >= 0.05, "the correction's plane meets a mass's")
     fx, fy = components(d, "F", "F", [(f"mr{i}", f"theta{i}") for i in (1, 2, 3)] + [("mrQ", "theta_Q")],
-                        "kg*m", "forces, with the correction's")
+                        "kg*m", "forces, with the correction's",
+                        table=("Forces, with the correction B₁", FORCE,
+                               _forces("123", ("theta1", "theta2", "theta3")) + [["B₁", "@mrQ", "@theta_Q"]], "m r"))
     d.step("mX", math.hypot(fx, fy) / p.bX, "kg", symbol=r"B_X", formula=rf"\frac{{{magnitude_formula('F_0', 'F_90')}}}{{@bX}}",
            note="the correction in X closes the force polygon")
     theta_x = closing_angle(d, "theta_X", r"\theta_X", "F_0", "F_90")
