@@ -59,8 +59,14 @@ def names_for(si_params: dict, steps) -> dict[str, float]:
 
 
 @lru_cache(maxsize=1024)
+def _tree(value: str):
+    """The parsed expression (parsing costs more than evaluating: draws repeat it thousands of times)."""
+    return expr.parse(value)
+
+
+@lru_cache(maxsize=1024)
 def _names(value: str) -> frozenset[str]:
-    return frozenset(expr.names_in(expr.parse(value)))
+    return frozenset(expr.names_in(_tree(value)))
 
 
 def early_rejection(template: Template, si_params: dict) -> Reading | None:
@@ -78,7 +84,7 @@ def readings(template: Template, names: dict[str, float], specs=None) -> tuple[R
     out = []
     for i, spec in enumerate(template.report if specs is None else specs):
         try:
-            value = expr.evaluate(spec.value, names)
+            value = expr.evaluate(_tree(spec.value), names)
         except expr.ExpressionError as exc:
             raise ExgenError(f"{template.id}: report[{i}] ({spec.what}): {exc}") from None
         except (ZeroDivisionError, ValueError, OverflowError):
