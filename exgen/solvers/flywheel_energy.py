@@ -33,11 +33,9 @@ def punching_press(p, d):
     given = d.step("dE", fw.flywheel_share(p.E, p.P, p.t), "J", symbol=r"\Delta E", formula=r"@E - @E_M",
                    note="the rest comes from the flywheel")
     d.mistake("dE", "motor_ignored", p.E)
-    d.require(given >= 0.3 * p.E, "a flywheel that hardly matters")
     w2 = d.step("omega_2", fw.speed_after(w1, given, p.I), "rad/s", symbol=r"\omega_2",
                 formula=r"\sqrt{@N^2 - \frac{2\,@dE}{@I}}", note=r"from $\Delta E = \tfrac{1}{2} I(\omega_1^2 - \omega_2^2)$")
     drop = d.step("drop", w1 - w2, "rad/s", symbol=r"\omega_1 - \omega_2", formula=r"@N - @omega_2")
-    d.require(0.02 <= drop / w1 <= 0.2, "a speed drop no press flywheel is sized for")
     d.mistake("drop", "motor_ignored", w1 - fw.speed_after(w1, p.E, p.I))
     d.mistake("drop", "linearised", given / (p.I * w1))
     d.mistake("drop", "final_speed", w2)
@@ -67,7 +65,6 @@ def turning_moment_equation(p, d):
     inertia = d.step("I", fw.inertia_for(delta_e, w, cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}")
     d.mistake("I", "plus_minus_read_as_total", delta_e / (w ** 2 * p.band))
     d.mistake("I", "rpm_as_rad_s", delta_e / ((w / RPM) ** 2 * cs))
-    d.require(100 <= inertia <= 20000, "a flywheel of unusual size for such an engine")
     excess = d.step("T_ex", _engine_torque(p).at(p.theta) - p.T0, "N*m", symbol=r"T - T_0",
                     formula=rf"@b \sin({n}\,@theta) + @c \cos({n}\,@theta)",
                     note="the torque left over to accelerate the flywheel")
@@ -107,7 +104,6 @@ def fluctuating_resistance(p, d):
     cs2 = d.step("Cs_2", fw.coefficient_of_fluctuation(delta_2, p.I, w), "", symbol=r"C_{s2}",
                  formula=r"\frac{@dE_2}{@I\,@N^2}")
     d.require_apart(cs2, cs1, 0.05, "the fluctuating resisting torque")
-    d.require(0.0005 <= min(cs1, cs2) and max(cs1, cs2) <= 0.05, "a fluctuation of speed no engine is built for")
     d.mistake("Cs_2", "constant_resistance", cs1)
     d.mistake("Cs_2", "half_band", cs2 / 2)
     d.mistake("Cs_2", "rpm_as_rad_s", delta_2 / (p.I * (w / RPM) ** 2))
@@ -120,7 +116,6 @@ def starting_torque(p, d):
     if abs(p.k - 1.0) > 0.03:  # at k = 1 m, k and k² agree
         d.mistake("alpha", "k_not_squared", p.tau / (p.m * p.k))
     w = d.step("omega", alpha * p.t, "rad/s", symbol=r"\omega", formula=r"@alpha\,@t", note="from rest")
-    d.require(w <= 300 * RPM, "faster than a steam engine runs")
     d.step("KE", fw.kinetic_energy(inertia, w), "J", symbol=r"E_k", formula=r"\tfrac{1}{2}\,@I\,@omega^2",
            note="equal to the work of the torque, τ θ with θ = ½ α t²")
     d.mistake("KE", "half_forgotten", inertia * w ** 2)
@@ -142,10 +137,8 @@ def energy_coefficient(p, d):
                      note="the coefficient of fluctuation of energy is ΔE over the work per cycle")
     cs = _band(p, d)
     inertia = d.step("I", fw.inertia_for(delta_e, w, cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}")
-    mass = d.step("m", fw.rim_mass(inertia, p.k), "kg", formula=r"\frac{@I}{@k^2}")
+    d.step("m", fw.rim_mass(inertia, p.k), "kg", formula=r"\frac{@I}{@k^2}")
     d.mistake("m", "plus_minus_read_as_total", delta_e / (w ** 2 * p.band) / p.k ** 2)
     d.mistake("m", "rpm_as_rad_s", delta_e / ((w / RPM) ** 2 * cs) / p.k ** 2)
     if abs(p.k - 1.0) > 0.03:  # at k = 1 m, k and k² agree
         d.mistake("m", "k_not_squared", inertia / p.k)
-    d.require(200 <= mass <= 40000, "a flywheel of unusual mass")
-    d.require(w * p.k <= 40, "a flywheel rim faster than cast iron stands")

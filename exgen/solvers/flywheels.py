@@ -76,7 +76,6 @@ def speed_fluctuation(p, d):
     inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2")
     cs = d.step("Cs", fw.coefficient_of_fluctuation(delta_e, inertia, p.N), "", symbol=r"C_s",
                 formula=r"\frac{@dE}{@I\,@N^2}", note="eq 3.5: the total band (ω₁ − ω₂)/ω")
-    d.require(0.001 <= cs <= 0.05, "a fluctuation of speed no engine flywheel is designed for")
     d.mistake("Cs", "rpm_as_rad_s", delta_e / (inertia * (p.N * 60 / (2 * math.pi)) ** 2))
     d.mistake("Cs", "half_band", cs / 2)
     d.mistake("Cs", "k_not_squared", delta_e / (p.m * p.k * p.N ** 2))
@@ -103,10 +102,8 @@ def flywheel_rim(p, d):
     d.step("b", p.ratio * thickness, "m", formula=r"@ratio\,@t")
     d.mistake("b", "square_section", math.sqrt(area))
     d.mistake("b", "ratio_inverted", thickness / p.ratio)
-    rim_speed = d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
-                       note="a cast-iron rim is kept below about 35 m/s")
-    d.require(rim_speed <= 35, "a rim faster than cast iron stands")
-    d.require(20 <= mass <= 3000 and 0.015 <= thickness <= 0.3, "a rim no engine would carry")
+    d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
+           note="a cast-iron rim is kept below about 35 m/s")
 
 
 # ---- Example 3.2: a torque-time diagram ----------------------------------------------------------
@@ -142,5 +139,3 @@ def torque_time(p, d):
                 formula=r"\frac{@dE}{@I\,@N^2}", note="eq 3.5: the total fluctuation (ω₁ − ω₂)/ω")
     d.mistake("Cs", "half_band", cs / 2)
     d.mistake("Cs", "rpm_as_rad_s", delta_e / (inertia * (w * 60 / (2 * math.pi)) ** 2))
-    d.require(0.005 <= cs <= 0.12, "a fluctuation of speed no machine flywheel is designed for")
-    d.require(150 <= tau_m * w <= 60e3, "a motor of unusual size for the machine")

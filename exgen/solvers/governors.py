@@ -44,7 +44,6 @@ def watt_height(p, d):
     d.require(h1 <= 0.9 * p.l, "arms too short for the height")
     alpha = d.step("alpha", math.acos(h1 / p.l), "rad", symbol=r"\alpha", formula=r"\cos^{-1}\frac{@h_1}{@l}",
                    note="the arm is the hypotenuse, h the height below its pivot")
-    d.require(math.radians(15) <= alpha <= math.radians(65), "arms too near the vertical or the horizontal")
     d.mistake("alpha", "sine_for_cosine", math.asin(h1 / p.l))
 
 
@@ -112,12 +111,10 @@ def porter_speed_range(p, d):
         arms = gv.lever_arms(linkage, gv.pose(linkage, r))
         d.mistake(f"omega_{tag}", "sleeve_moment_arm",
                   math.sqrt((p.m * G * arms.IZ + load / 2 * arms.IZ) / arms.XZ / (p.m * r)))
-    d.require(1.05 <= w2 / w1 <= 1.25, "a speed range no Porter governor is built for")
     lift = d.step("lift", gv.pose(linkage, p.r1).depth - gv.pose(linkage, p.r2).depth, "m", symbol=r"x",
                   formula=r"(@l\cos @alpha_1 + @l\cos @beta_1) - (@l\cos @alpha_2 + @l\cos @beta_2)",
                   note="how far the sleeve rises")
     d.mistake("lift", "one_arm_only", p.l * (math.cos(d.value_of("alpha_1")) - math.cos(d.value_of("alpha_2"))))
-    d.require(lift <= min(0.1, 0.35 * p.l), "a sleeve travel longer than governors are built with")
 
 
 def porter_friction(p, d):
@@ -138,7 +135,6 @@ def porter_friction(p, d):
     d.mistake("omega_down", "friction_wrong_side", rising)
     d.mistake("omega_up", "friction_doubled", gv.equilibrium_speed(p.m, load + 2 * p.f, arms))
     d.mistake("omega_down", "friction_doubled", gv.equilibrium_speed(p.m, load - 2 * p.f, arms))
-    d.require(0.02 <= (rising - falling) / w <= 0.15, "a friction band no governor would be built with")
     return w
 
 
@@ -157,7 +153,6 @@ def porter_sleeve_friction(p, d):
                       note="the sleeve begins to rise: F₀h = m g·IZ + (M g + f)·IZ")
     d.mistake("f", "friction_wrong_side", -friction)
     d.mistake("f", "rpm_as_rad_s", gv.sleeve_friction(p.m * (p.N0 / RPM) ** 2 * r0, p.m, p.M, arms0))
-    d.require(0.02 * p.M * G <= friction <= 0.35 * p.M * G, "sleeve friction no governor would have")
     top = gv.pose_at_angle(linkage, p.alpha1)
     arms1 = gv.lever_arms(linkage, top)
     d.step("r_1", top.r, "m", formula=r"@e + @l\sin @alpha1")
@@ -192,7 +187,6 @@ def porter_dead_load(p, d):
     d.mistake("M", "sleeve_moment_arm", 2 * (force * h - p.m * G * iz) / (G * iz))
     if p.e > 0:
         d.mistake("M", "offset_ignored", (p.m * p.N ** 2 * iz * h - p.m * G * iz) / (G * iz))
-    d.require(3 <= load <= 80 and load >= 2 * p.m, "a central load no Porter governor carries")
     speeds = []
     for tag, sign, word in (("1", -1, "rises"), ("2", 1, "falls")):
         hk = d.step(f"h_{tag}", h + sign * p.x / 2, "m", formula=rf"@h {'-' if sign < 0 else '+'} \frac{{@x}}{{2}}",
@@ -213,7 +207,6 @@ def porter_dead_load(p, d):
                          formula=r"\frac{@N}{@omega_1 - @omega_2}", note="eq 4.5, with ω the mean speed")
     d.mistake("S", "sensitivity_inverted", 1 / sensitivity)
     d.mistake("S", "rpm_as_rad_s", (p.N / RPM) / (speeds[0] - speeds[1]))
-    d.require(5 <= sensitivity <= 100, "a governor far too sluggish or too sensitive")
 
 
 def proell_extension(p, d):
@@ -232,7 +225,6 @@ def proell_extension(p, d):
                  note=r"moments about I: $F\,(AB + BZ) = m g\cdot IZ + \tfrac{1}{2} M g\cdot IC$")
     d.mistake("AB", "rpm_as_rad_s", (p.m + p.M) * G * iz / (p.m * (p.N / RPM) ** 2 * p.r) - bz)
     d.mistake("AB", "sleeve_moment_arm", (p.m + p.M / 2) * G * iz / force - bz)
-    d.require(0.15 * p.l <= ext <= 0.7 * p.l, "an extension of unusual length")
     d.step("T", gv.upper_arm_tension(p.m, p.M * G, mid.alpha), "N", symbol=r"T_{BD}",
                      formula=r"\frac{@m\,@g + \tfrac{1}{2}\,@M\,@g}{@BZ / @l}",
                      note="the arm's vertical pull carries the ball and half the sleeve: T cos θ = m g + M g/2")
@@ -251,7 +243,6 @@ def proell_speeds(p, d):
     tilt = gv.pose(linkage, p.r2).beta - gv.pose(linkage, p.r1).beta
     w2, arms2 = _position(p, d, linkage, "2", "r2", p.r2, load, "@W_s", extension=p.e, tilt=tilt,
                           note="greatest radius: the extension has turned with the lower arm")
-    d.require(1.02 <= w2 / w1 <= 1.4, "a speed range no Proell governor is built for")
     upright = gv.lever_arms(linkage, gv.pose(linkage, p.r2), p.e, 0.0)
     d.mistake("omega_2", "extension_kept_vertical", gv.equilibrium_speed(p.m, load, upright))
     d.mistake("x_2", "extension_kept_vertical", p.r2)
