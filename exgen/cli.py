@@ -121,6 +121,16 @@ def cmd_solve(args) -> int:
     return 0
 
 
+def _given_json(p) -> dict:
+    """A given as printed, and in the SI unit the working uses (ω in rad/s for a speed in rpm)."""
+    from .render.working import si_unit
+
+    out = {"value": p.text, "unit": p.unit}
+    if isinstance(p.si, float) and p.unit and si_unit(p.unit) not in (None, p.unit):
+        out.update(si=p.si, si_unit=si_unit(p.unit))
+    return out
+
+
 def solution_json(variant) -> dict:
     """Every part's value and unit, and every step's: its ask as plain text (and as written, with LaTeX)."""
     from .render.unicode_math import text_to_plain
@@ -130,7 +140,7 @@ def solution_json(variant) -> dict:
 
     return {
         "template": variant.template.id,
-        "given": {p.name: {"value": p.text, "unit": p.unit} for p in variant.params},
+        "given": {p.name: _given_json(p) for p in variant.params},
         "parts": {
             part_id: {"ask": text_to_plain(variant.asks[part_id]), "ask_latex": variant.asks[part_id],
                       "value": plain(a.value), "unit": a.part.unit, "text": a.text}

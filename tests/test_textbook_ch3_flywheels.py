@@ -138,3 +138,14 @@ def test_problem_3_5_fluctuating_resistance(bank):
     delta_e = 2800 * math.sqrt(0.35)
     assert steps(variant)["dE_2"] == pytest.approx(delta_e) and round(delta_e, 1) == 1656.5
     assert got["c"] == pytest.approx(100 * delta_e / (1000 * w ** 2)) and round(got["c"], 4) == 0.1678
+
+
+def test_example_3_3_speeds_in_solve_json(bank):
+    """The speeds the example works in rad/s are in `exgen solve --json`: ω₁ as the given's SI value, ω₂ a step."""
+    from exgen.cli import solution_json
+
+    _, variant, _ = answers(bank, "flywheels.punching_press", P="2.25 kW", I="50 kg*m^2", N="250 rpm",
+                            E="4.75 kJ", t="0.75 s")
+    out = solution_json(variant)
+    assert out["given"]["N"]["si_unit"] == "rad/s" and round(out["given"]["N"]["si"], 2) == 26.18
+    assert round(next(s["value"] for s in out["steps"] if s["name"] == "omega_2"), 2) == 23.73
