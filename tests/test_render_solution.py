@@ -139,8 +139,10 @@ def test_number_parts(value, parts):
     (23.876, "m/s", r"23.88\ \text{m/s}", '23.88 thin "m/s"', "23.88 m/s"),
     (177.96, "deg", r"178.0^{\circ}", '178.0"°"', "178.0°"),
     (2.5, "percent", r"2.5\%", '2.5"%"', "2.5%"),
-    (3e8, "N/m^2", r"3 \times 10^{8}\ \text{N/m²}", '3 times 10^(8) thin "N/m²"', "3×10⁸ N/m²"),
+    (3e8, "N/m^2", r"3 \times 10^{8}\ \text{N/m²}", '3 times 10^(8) thin "N/m"^(2)', "3×10⁸ N/m²"),
     (493.96, "N*m", r"494.0\ \text{N·m}", '494.0 thin "N·m"', "494.0 N·m"),
+    (0.7872, "kg*m^2", r"0.7872\ \text{kg·m²}", '0.7872 thin "kg·m"^(2)', "0.7872 kg·m²"),
+    (9.81, "m/s^2", r"9.81\ \text{m/s²}", '9.81 thin "m/s"^(2)', "9.81 m/s²"),
     (2.1, "", "2.1", "2.1", "2.1"),
 ])
 def test_quantities_per_target(value, unit, md, typ, plain):

@@ -111,6 +111,22 @@ class Markdown:
         return " ".join(piece for row in rows for piece in row)
 
 
+_UNIT_POWER = re.compile("([⁰¹²³⁴⁵⁶⁷⁸⁹⁻]+)")
+_PLAIN_POWER = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+
+
+def _typst_unit(shown: str) -> str:
+    """'kg·m²' -> '"kg·m"^(2)': a unit's powers as math attachments. Inside math, the superscript
+    digits of a quoted unit would be set by the prose show rule on the baseline ("mm2")."""
+    out = []
+    for i, piece in enumerate(_UNIT_POWER.split(shown)):
+        if i % 2:
+            out.append(f"^({piece.translate(_PLAIN_POWER)})")
+        elif piece:
+            out.append(f'"{piece}"')
+    return "".join(out)
+
+
 class Typst:
     """Typst markup: math converted from LaTeX, prose escaped."""
 
@@ -135,7 +151,7 @@ class Typst:
         number = self.number(value, sig)
         if shown in _PLAIN_UNITS:
             return f'{number}"{shown}"'
-        return f'{number} thin "{shown}"' if shown else number
+        return f"{number} thin {_typst_unit(shown)}" if shown else number
 
     def text(self, text: str) -> str:
         return text_to_typst(text)
