@@ -95,7 +95,7 @@ def test_sheet_answer_file_and_grade_on_the_command_line(tmp_path, capsys):
         form = (folder / "answers.yaml").read_text(encoding="utf-8")
         sheet = (folder / "sheet.md").read_text(encoding="utf-8")
         system = next(name for name in SYSTEMS if _describes(sheet, name))
-        values = {name: float(re.search(rf"{name} = ([\d.]+)", sheet.replace("\\", "")).group(1))
+        values = {name: float(re.search(rf"\${name}\$ = ([\d.]+)", sheet.replace("\\", "")).group(1))
                   for name in ("K", "M", "m")}
         right = BY_HAND[system]
         if how == "omega":

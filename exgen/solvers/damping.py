@@ -24,8 +24,8 @@ def decrement_steps(p, d):
         ln_ratio, formula = math.log(p.a1 / p.a_r), r"\frac{1}{@n}\ln\frac{@a1}{@a_r}"
     n = p.n
     delta = d.step("delta", ln_ratio / n, "", symbol=r"\delta", formula=formula,
-                   note="the logarithmic decrement per cycle: n complete cycles lie between a₁ and a_r, so r − 1 = n "
-                        "in ln(a₁/a_r) = (r − 1) δ (eq. 6.46)")
+                   note=r"the logarithmic decrement per cycle: $n$ complete cycles lie between $a_1$ and $a_r$, so "
+                        r"$r - 1 = n$ in $\ln(a_1/a_r) = (r - 1)\,\delta$ (eq. 6.46)")
     d.mistake("delta", "cycles_plus_one", ln_ratio / (n + 1))
     if n > 1:
         d.mistake("delta", "cycles_minus_one", ln_ratio / (n - 1))
@@ -69,7 +69,7 @@ def log_decrement(p, d):
     zeta = decrement_steps(p, d)
     d.require(zeta >= 0.08, "damping too light to show in f_d/f_n at four figures")
     c = d.step("C", zeta * vb.critical_damping(p.m, omega), "N*s/m", formula=r"2\,@zeta\,@m\,@omega_n",
-               note="C = ζ C_c with C_c = 2 m ω_n: the resistance at unit velocity")
+               note=r"$C = \zeta C_c$ with $C_c = 2 m\omega_n$: the resistance at unit velocity")
     if p.n_s > 1:
         d.mistake("C", "one_spring", zeta * vb.critical_damping(p.m, vb.natural_speed(p.K, p.m)))
     d.mistake("C", "cycles_plus_one", d.mistakes["zeta"]["cycles_plus_one"] * vb.critical_damping(p.m, omega))
@@ -77,7 +77,7 @@ def log_decrement(p, d):
         d.mistake("C", "cycles_minus_one", d.mistakes["zeta"]["cycles_minus_one"] * vb.critical_damping(p.m, omega))
     d.mistake("C", "omega_for_f", zeta * vb.critical_damping(p.m, vb.frequency(omega)))
     ratio = d.step("ratio", math.sqrt(1 - zeta ** 2), "", symbol=r"\frac{f_d}{f_n}", formula=r"\sqrt{1 - @zeta^2}",
-                   note="ω_d = ω_n √(1 − ζ²)")
+                   note=r"$\omega_d = \omega_n\sqrt{1 - \zeta^2}$")
     d.mistake("ratio", "ratio_inverted", 1 / ratio)
     d.mistake("ratio", "damping_ignored", 1.0)
     wd = d.step("omega_d", omega * ratio, "rad/s", symbol=r"\omega_d", formula=r"@omega_n\,@ratio")

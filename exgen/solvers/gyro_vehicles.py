@@ -40,7 +40,7 @@ def _heel(p, d, momentum_name: str, apart: float):
                        note="the precession")
     gyro = d.step("C_g", momentum * big_omega, "N*m", symbol=r"C_g", formula=rf"@{momentum_name}\,@Omega",
                   note="the gyroscopic couple of wheels and engine with the machine upright; leaning at θ, "
-                       "the spin axes tilt and it becomes C_g cos θ")
+                       "the spin axes tilt and it becomes $C_g \\cos\\theta$")
     fc = d.step("F_c", gy.centrifugal_force(p.m, p.v, p.R), "N", formula=r"\frac{@m\,@v^2}{@R}",
                 note="the centrifugal force, acting at the centre of gravity")
     d.mistake("F_c", "kmh_not_converted", gy.centrifugal_force(p.m, p.v / KMH, p.R))
@@ -50,7 +50,7 @@ def _heel(p, d, momentum_name: str, apart: float):
     theta = d.step("theta", math.atan2(gyro + cc, p.m * gy.G * p.h), "rad",
                    formula=r"\tan^{-1}\frac{@C_g + @C_c}{@m\,@g\,@h}",
                    note="both couples overturn outwards and scale with cos θ; the weight rights the machine "
-                        "with m g h sin θ: (C_g + C_c) cos θ = m g h sin θ")
+                        "with $m g h \\sin\\theta$: $(C_g + C_c)\\cos\\theta = m g h \\sin\\theta$")
     d.mistake("theta", "gyro_ignored", math.atan2(cc, p.m * gy.G * p.h))
     d.mistake("theta", "complement", math.pi / 2 - theta)
     d.require_apart(theta, math.atan2(cc, p.m * gy.G * p.h), apart, "the gyroscopic couple")
@@ -138,13 +138,16 @@ def car_wheel_reactions(p, d):
     d.mistake("engine_loads", "precession_reversed", "front" if loaded == "rear" else "rear")
     fc = d.step("F_c", gy.centrifugal_force(p.m, p.v, p.R), "N", formula=r"\frac{@m\,@v^2}{@R}")
     pc = d.step("P_c", fc * p.h / (2 * p.x), "N", symbol=r"P_c", formula=r"\frac{@F_c\,@h}{2\,@x}",
-                note="the centrifugal couple F_c h, outwards: more on each outer wheel, less on each inner")
+                note="the centrifugal couple $F_c h$, outwards: more on each outer wheel, less on each inner")
     d.mistake("P_c", "not_shared", fc * p.h / p.x)
     outer = gy.outer_side(p.turn)
     e_front = -1.0 if loaded == "rear" else 1.0
+    rows = []
     for axle, share, sign_e in (("f", "W_f", e_front), ("r", "W_r", -e_front)):
         for side in ("left", "right"):
             out = 1.0 if side == outer else -1.0
+            rows.append([f"{'front' if axle == 'f' else 'rear'} {side} ({'outer' if out > 0 else 'inner'})",
+                         f"@{share}", out * pw, sign_e * pe, out * pc, f"@R_{axle}{side[0]}"])
             name = f"R_{axle}{side[0]}"
             value = d.value_of(share) + out * (pw + pc) + sign_e * pe
             words = f"{'front' if axle == 'f' else 'rear'} {side}, {'outer' if out > 0 else 'inner'}"
@@ -155,6 +158,8 @@ def car_wheel_reactions(p, d):
             d.mistake(name, "weight_split_reversed",
                       d.value_of("W_r" if axle == "f" else "W_f") + out * (pw + pc) + sign_e * pe)
             d.mistake(name, "centrifugal_ignored", d.value_of(share) + out * pw + sign_e * pe)
+    d.table("Each wheel's reaction: its share of the weight, then the changes (+ more load, − less)",
+            [("Wheel",), ("$W$", "N"), ("$P_w$", "N"), ("$P_e$", "N"), ("$P_c$", "N"), ("$R$", "N")], rows)
     d.require(min(d.value_of(n) for n in ("R_fl", "R_fr", "R_rl", "R_rr")) > 0.15 * weight / 4,
               "an inner wheel nearly lifts: the car would be at the limit of overturning")
 
@@ -180,7 +185,7 @@ def rail_car_limiting_speed(p, d):
                    note="each inner wheel's share of the weight")
     v = d.step("v_max", math.sqrt(wheel * 2 * p.x / (per_v2 + per_v2_g)), "m/s", symbol=r"v_{\max}",
                formula=r"\sqrt{\frac{2\,@x\,@W_i}{@k_c + @k_g}}",
-               note="each inner wheel loses (C_c + C_g)/(2x): it leaves the rail when that equals its share")
+               note="each inner wheel loses $(C_c + C_g)/(2x)$: it leaves the rail when that equals its share")
     kmh = v / KMH
     d.require(40 <= kmh <= 200, "a limiting speed outside 40-200 km/h: not a practical rail car")
     wrong = per_v2 + (2 * p.I_a - s * 2 * p.G * p.I_m) / (p.r * p.R)

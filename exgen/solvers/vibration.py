@@ -57,13 +57,13 @@ def compound_pendulum(p, d):
     d.mistake("I_O", "wrong_axis", i_g)
     d.constant("g", vb.G, "m/s^2", note="standard gravity")
     omega = d.step("omega_n", vb.compound_pendulum_speed(p.m, p.h, i_o), "rad/s", symbol=r"\omega_n",
-                   formula=r"\sqrt{\frac{@m\,@g\,@h}{@I_O}}", note="from I_O θ̈ + m g h θ = 0")
+                   formula=r"\sqrt{\frac{@m\,@g\,@h}{@I_O}}", note=r"from $I_O\ddot{\theta} + m g h\,\theta = 0$")
     d.mistake("omega_n", "wrong_axis", vb.compound_pendulum_speed(p.m, p.h, i_g))
     d.step("f_n", vb.frequency(omega), "Hz", symbol="f_n", formula=r"\frac{@omega_n}{2\pi}")
     d.mistake("f_n", "omega_for_f", omega)
     d.mistake("f_n", "wrong_axis", vb.frequency(vb.compound_pendulum_speed(p.m, p.h, i_g)))
     d.step("L", i_o / (p.m * p.h), "m", symbol="L", formula=r"\frac{@I_O}{@m\,@h}",
-           note="the simple pendulum with the same ω_n: g/L = m g h/I_O")
+           note=r"the simple pendulum with the same $\omega_n$: $g/L = m g h/I_O$")
     d.mistake("L", "wrong_axis", i_g / (p.m * p.h))
 
 
@@ -75,18 +75,18 @@ def spring_mass(p, d):
     k_series, k_parallel = vb.springs_series(p.K1, p.K2), vb.springs_parallel(p.K1, p.K2)
     if series:
         k = d.step("K_eq", k_series, "N/m", symbol=r"K'", formula=r"\frac{@K1\,@K2}{@K1 + @K2}",
-                   note="in series the springs carry one force: 1/K' = 1/K₁ + 1/K₂")
+                   note=r"in series the springs carry one force: $1/K' = 1/K_1 + 1/K_2$")
         d.mistake("K_eq", "parallel_for_series", k_parallel)
     else:
         k = d.step("K_eq", k_parallel, "N/m", symbol=r"K'", formula=r"@K1 + @K2",
-                   note="in parallel the springs share one displacement: K' = K₁ + K₂")
+                   note=r"in parallel the springs share one displacement: $K' = K_1 + K_2$")
         d.mistake("K_eq", "series_for_parallel", k_series)
     d.constant("g", vb.G, "m/s^2", note="standard gravity")
     delta = d.step("delta", p.m * vb.G / k, "m", symbol=r"\delta", formula=r"\frac{@m\,@g}{@K_eq}",
-                   note="the static deflection under the weight, m g = K' δ")
+                   note=r"the static deflection under the weight, $m g = K'\delta$")
     d.mistake("delta", "parallel_for_series" if series else "series_for_parallel",
               p.m * vb.G / (k_parallel if series else k_series))
-    omega, _ = natural_frequency(d, "K_eq", "m", note="from m ẍ + K' x = 0; the same as √(g/δ)")
+    omega, _ = natural_frequency(d, "K_eq", "m", note=r"from $m\ddot{x} + K'x = 0$; the same as $\sqrt{g/\delta}$")
     d.mistake("f_n", "parallel_for_series" if series else "series_for_parallel",
               vb.frequency(vb.natural_speed(k_parallel if series else k_series, p.m)))
     periodic_time(d)
@@ -122,7 +122,7 @@ def stepped_shaft(p, d):
     omega = d.step("omega_n", 2 * math.pi * p.f, "rad/s", symbol=r"\omega_n", formula=r"2\pi\,@f")
     length = d.step("l_eq", vb.length_for_speed(p.G, p.d1, inertia, omega), "m", symbol=r"l'",
                     formula=r"\frac{@G\,\pi\,@d1^4}{32\,@I\,@omega_n^2}",
-                    note="the length of a shaft of diameter d₁ that gives f_n: ω_n² = G π d₁⁴ / (32 l' I)")
+                    note=r"the length of a shaft of diameter $d_1$ that gives $f_n$: $\omega_n^2 = G\pi d_1^4/(32\,l'I)$")
     d.mistake("l_eq", "omega_for_f", vb.length_for_speed(p.G, p.d1, inertia, p.f))
     known = d.step("l_12", vb.equivalent_length([(p.l1, p.d1), (p.l2, p.d2)], p.d1), "m", symbol=r"l_{12}'",
                    formula=r"@l1 + @l2\left(\frac{@d1}{@d2}\right)^4",
@@ -159,5 +159,5 @@ def cantilever_end_mass(p, d):
     d.mistake("f_t", "simply_supported", vb.frequency(vb.natural_speed(48 * p.E * vb.second_moment(p.d) / p.l ** 3, p.m)))
     d.constant("g", vb.G, "m/s^2", note="standard gravity")
     d.step("delta_t", p.m * vb.G / s_trans, "m", symbol=r"\delta_t", formula=r"\frac{@m\,@g}{@s_t}",
-           note="the static deflection under the disc's weight; f_t = √(g/δ)/2π again")
+           note=r"the static deflection under the disc's weight; $f_t = \sqrt{g/\delta}/2\pi$ again")
     d.require(5 <= vb.frequency(w_trans) <= 200, "a transverse frequency outside 5-200 Hz")

@@ -34,7 +34,7 @@ def lever_equivalent(p, d):
                note="springs at one reference point add, like springs in parallel")
     d.mistake("K_T", "ratio_not_squared", p.K_A * p.L / p.b + p.K_B)
     d.mistake("K_T", "ratio_inverted", p.K_A * (p.b / p.L) ** 2 + p.K_B)
-    natural_frequency(d, "K_T", "m_T", note="m_T ẍ + K_T x = 0 at B")
+    natural_frequency(d, "K_T", "m_T", note=r"$m_T\ddot{x} + K_T x = 0$ at B")
     d.mistake("f_n", "wrong_axis", vb.frequency(vb.natural_speed(k, total - right_rod + wrong_rod)))
     d.require(0.5 <= d.value_of("f_n") <= 30, "a natural frequency outside 0.5-30 Hz")
     d.require_apart(total, total - right_rod + wrong_rod, APART, "the rod's axis")
@@ -49,9 +49,9 @@ def beam_two_springs(p, d):
     d.mistake("I_O", "ball_ignored", beam)
     q = d.step("q", p.K * (p.a ** 2 + p.b ** 2), "N*m", symbol="q", formula=r"@K\,(@a^2 + @b^2)",
                note="a turn θ stretches each spring by its distance from O times θ, and each pushes back with "
-                    "a moment K r² θ: I_O θ̈ + K(a² + b²) θ = 0")
+                    r"a moment $K r^2\theta$: $I_O\ddot{\theta} + K(a^2 + b^2)\theta = 0$")
     d.mistake("q", "ratio_not_squared", p.K * (p.a + p.b))
-    natural_frequency(d, "q", "I_O", torsional=True, note="from I_O θ̈ + q θ = 0")
+    natural_frequency(d, "q", "I_O", torsional=True, note=r"from $I_O\ddot{\theta} + q\,\theta = 0$")
     d.mistake("f_n", "ball_ignored", vb.frequency(vb.natural_speed(q, beam)))
     d.require(1 <= d.value_of("f_n") <= 40, "a natural frequency outside 1-40 Hz")
     d.require_apart(inertia, beam, APART, "the ball")
@@ -67,7 +67,7 @@ def _equivalent_check(p, d):
     pendulum = d.step("K_pend", vb.pendulum_stiffness(p.M, p.l, p.a), "N/m", symbol=r"K''",
                       formula=r"\frac{@M\,@g\,@l}{@a^2}", note="the pendulum's weight acts as a spring")
     d.step("K_T", spring + pendulum, "N/m", symbol=r"K_T", formula=r"@K_eq + @K_pend",
-           note="ω_n = √(K_T/m_T) is the same as from Newton's law")
+           note=r"$\omega_n = \sqrt{K_T/m_T}$ is the same as from Newton's law")
 
 
 def damped_pendulum_lever(p, d):
@@ -84,15 +84,15 @@ def damped_pendulum_lever(p, d):
                note="moments about D for a small turn θ: the spring K (bθ) b and the weight M g l θ both restore")
     d.mistake("q", "pendulum_ignored", p.K * p.b ** 2)
     omega = d.step("omega_n", math.sqrt(q / inertia), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@q}{@I_D}}",
-                   note="from I_D θ̈ + C a² θ̇ + q θ = 0")
+                   note=r"from $I_D\ddot{\theta} + C a^2\dot{\theta} + q\,\theta = 0$")
     d.mistake("omega_n", "pendulum_ignored", math.sqrt(p.K * p.b ** 2 / inertia))
     d.mistake("omega_n", "omega_for_f", vb.frequency(omega))
     d.require_apart(omega, math.sqrt(p.K * p.b ** 2 / inertia), APART, "the pendulum")
     mass = d.step("m_T", inertia / p.a ** 2, "kg", symbol=r"m_T", formula=r"\frac{@I_D}{@a^2}",
-                  note="the equivalent mass at A, the dashpot: I_ADE/DA² + M (DE/DA)² + m_p")
+                  note=r"the equivalent mass at A, the dashpot: $I_{ADE}/DA^2 + M(DE/DA)^2 + m_p$")
     _equivalent_check(p, d)
     c = d.step("C", zeta * vb.critical_damping(mass, omega), "N*s/m", formula=r"2\,@zeta\,@omega_n\,@m_T",
-               note="ζ = C a² / (2 I_D ω_n), the dashpot referred to itself")
+               note=r"$\zeta = C a^2/(2 I_D\omega_n)$, the dashpot referred to itself")
     d.mistake("C", "lever_ignored", 2 * zeta * omega * inertia)
     cc = d.step("C_c", vb.critical_damping(mass, omega), "N*s/m", symbol=r"C_c", formula=r"\frac{@C}{@zeta}",
                 note="the dashpot that would make the system critically damped")
