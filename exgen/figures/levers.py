@@ -58,13 +58,13 @@ def beam_two_springs(variant) -> str:
     ball(d, (xb, -14), 10)
     for letter, x, y in (("A", xa - 16, -6), ("O", xo, -10), ("B", xb + 18, -6)):
         d.text((x, y), letter, style="italic")
+    dimension(d, (xa, 0), (xo, 0), a.label("OA"), side=-1, offset=128)  # first: labels keep clear of its lines
+    dimension(d, (xo, 0), (xb, 0), b.label("OB"), side=-1, offset=128)
     k = need(variant, "K").label("K")
-    d.place([((xa + 16, 60), "start")], k)
-    d.place([((xb - 16, 60), "end")], k)
+    d.place([((xa + 16, 60), "start"), ((xa - 16, 60), "end")], k)   # outside the spring when O is close
+    d.place([((xb - 16, 60), "end"), ((xb + 16, 60), "start")], k)
     d.place([((xb, -32), "middle"), ((xb - 16, -32), "end")], need(variant, "m_B").value_text)
     d.place([((xo - 24, -14), "end"), ((xo + 24, -14), "start")], "beam " + need(variant, "m").value_text)
-    dimension(d, (xa, 0), (xo, 0), a.label("OA"), side=-1, offset=128)
-    dimension(d, (xo, 0), (xb, 0), b.label("OB"), side=-1, offset=128)
     return d.svg("Beam AOB pivoted at O on two springs")
 
 
@@ -87,11 +87,13 @@ def damped_pendulum_lever(variant) -> str:
     ground(d, (wall, yb), (0, 1), 50, side=-1)
     for letter, at in (("A", (xa - 14, -6)), ("D", (-14, -8)), ("E", (22, ye + 18))):
         d.text(at, letter, style="italic")
-    d.place([((-12, yb + 5), "end"), ((-12, yb - 8), "end"), ((-22, yb + 18), "end")], "B", style="italic")
-    d.place([((wall / 2, yb - 16), "middle")], need(variant, "K").label("K"))
-    d.place([((22, ye + 38), "start"), ((-22, ye + 30), "end")], need(variant, "M").label("M"))
-    d.place([((xa - 20, 70), "end"), ((xa + 20, 70), "start")], "piston " + need(variant, "m_p").value_text)
+    # dimensions first, so the labels placed after them keep clear of their lines and text
     dimension(d, (xa, 0), (0, 0), a.label("DA"), side=1, offset=34)
     dimension(d, (0, 0), (0, yb), b.label("DB"), side=1, offset=28)
     dimension(d, (0, 0), (0, ye), l.label("DE"), side=1, offset=28 + (0 if abs(ye - yb) < 1 else 150))
+    d.place([((-12, yb + 5), "end"), ((-12, yb - 8), "end"), ((-22, yb + 18), "end")], "B", style="italic")
+    d.place([((wall / 2, yb - 16), "middle"), ((wall / 2, yb + 26), "middle"), ((wall / 2 + 30, yb - 16), "middle")],
+            need(variant, "K").label("K"))
+    d.place([((22, ye + 38), "start"), ((-22, ye + 30), "end")], need(variant, "M").label("M"))
+    d.place([((xa - 20, 70), "end"), ((xa + 20, 70), "start")], "piston " + need(variant, "m_p").value_text)
     return d.svg("Bell crank ADE with a pendulum mass, a spring and a dashpot")
