@@ -31,6 +31,7 @@ _UNIT_CHARS = re.compile(r"[A-Za-z%*/^0-9.()\s\-\u00b0]*")
 _POWER = r"(?:\^|\*\*)"
 _BIG_POWER = re.compile(rf"{_POWER}\s*\(?\s*[+-]?\s*\d{{2,}}")
 _POWER_TOWER = re.compile(rf"{_POWER}[^A-Za-z]*?{_POWER}")  # m^9^9^9: pint would compute it
+_HYPHEN_PRODUCT = re.compile(r"(?<=[A-Za-z])-(?=[A-Za-z])")  # N-m, kg-m^2, lbf-ft: a product
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
 _LABEL = re.compile(r"^\s*[A-Za-z\u0370-\u03ff][A-Za-z0-9_\u0370-\u03ff ]{0,11}=\s*")
 _SUPERSCRIPTS = re.compile("[\u207a\u207b]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+")
@@ -59,9 +60,10 @@ def _plain(text: str) -> str:
 
 
 def normalise_unit(text: str) -> str:
-    """Unicode and habits ("Nm", "rev/min", "°") to a string pint reads."""
+    """Unicode and habits ("Nm", "N-m", "rev/min", "°") to a string pint reads."""
     text = _plain(text).strip()
     text = text.replace("\u00b0C", "degC").replace("\u00b0", "degree")
+    text = _HYPHEN_PRODUCT.sub("*", text)
     compact = text.replace(" ", "")
     return _aliases().get(compact, text)
 

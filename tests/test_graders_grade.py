@@ -117,6 +117,7 @@ def force_variant(bank):
 @pytest.mark.parametrize("factor, unit, status", [
     (1, "N", CORRECT), (1e-3, "kN", CORRECT), (1e-3, " kN", CORRECT), (1, "", CORRECT), (1e-6, "MN", CORRECT),
     (1 / 4.4482216, "lbf", CORRECT), (1 / 9.80665, "kgf", CORRECT), (1e-3, "", WRONG), (1, "m", WRONG), (1, "kg", WRONG), (1, "N*m", WRONG),
+    (1, "N-m", WRONG),
 ])
 def test_any_unit_of_the_right_kind_is_accepted(force_variant, factor, unit, status):
     value = force_variant.answers["t"].value * factor
@@ -278,7 +279,9 @@ def test_a_mistake_without_say_gets_the_default_message(bank):
 
 @pytest.mark.parametrize("typed, status, text", [
     ("{n}", CORRECT, "correct"), ("{n}.0", CORRECT, "correct"), ("{n}.5", WRONG, "whole number"),
-    ("{up}", WRONG, "not the expected whole number"), ("{n} belts", UNREADABLE, "belts"),
+    ("{up}", WRONG, "not the expected whole number"), ("{n} belts", CORRECT, "correct"),
+    ("{n} V-belts", CORRECT, "correct"), ("{up} belts", WRONG, "not the expected whole number"),
+    ("{n} kg", WRONG, "a mass"), ("{n} belts and 2", UNREADABLE, "format problem"),
 ])
 def test_integer_part(bank, typed, status, text):
     variant = make_variant(bank.get("belts.v_belt_count"), 11)

@@ -24,6 +24,7 @@ from exgen.units import convert, format_number, format_quantity, parse_quantity,
     ("289.8 Nm", 289.8, "Nm"),
     ("5.2 kN\u00b7m", 5.2, "kN*m"),
     ("644.6 rev/min", 644.6, "rev/min"),
+    ("309.2 N-m", 309.2, "N-m"),
     (".5 m", 0.5, "m"),
 ])
 def test_parse_quantity_reads(text, value, unit):
@@ -62,6 +63,8 @@ def test_a_strange_but_harmless_unit_is_read_as_what_it_is():
     (289.8, "N-m", "N*m", 289.8),            # the hyphen some students (and US texts) write
     (1.5, "kN-m", "N*m", 1500.0),
     (250.0, "N-mm", "N*m", 0.25),
+    (2.0, "kg-m^2", "kg*m^2", 2.0),          # a hyphen between any unit symbols multiplies
+    (1.0, "lbf-ft", "N*m", 1.3558179483314),
 ])
 def test_convert(value, src, dst, expected):
     assert convert(value, src, dst) == pytest.approx(expected)

@@ -1,17 +1,22 @@
-"""A whole number, graded exactly: a count of belts, of teeth. "4" and "4.0" are 4; "3.99" is not a
-whole number. A unit, when the part asks one, converts as for numbers.
+"""A whole number, graded exactly: a count of belts, of teeth. "4", "4.0" and "4 belts" are 4 (a count
+may carry the noun for what it counts); "3.99" is not a whole number. A unit, when the part asks one,
+converts as for numbers, and a unit of another kind ("4 kg") is an answer of the wrong kind.
 """
 from __future__ import annotations
 
 import math
+import re
 
 from .. import units
+from ..errors import FormatProblem
 from ..template import PartSpec, Tolerance
-from .base import AnswerType, Given, asked_unit
+from .base import AnswerType, Given, asked_unit, refuse_long
 from .quantity import in_unit
 
 NOT_EXACT = "not the expected whole number"
 NOT_A_WHOLE_NUMBER = "a whole number is asked"
+#: "5 belts", "24 teeth", "3 V-belts": a count followed by up to three words for what is counted.
+_COUNT_WITH_NOUN = re.compile(r"\s*([+-]?\d{1,9}(?:\.\d{0,9})?)\s+([A-Za-z][A-Za-z-]{0,29}(?: [A-Za-z][A-Za-z-]{0,29}){0,2})\s*")
 
 
 def integer(given: float, expected: float) -> bool:
@@ -33,7 +38,15 @@ class Integer(AnswerType):
         return f"whole number{' of ' + part.unit if part.unit else ''}"
 
     def read(self, text: str, part: PartSpec) -> Given:
-        reading, value = in_unit(text, part.unit)
+        refuse_long(text)
+        try:
+            reading, value = in_unit(text, part.unit)
+        except FormatProblem:
+            counted = _COUNT_WITH_NOUN.fullmatch(text)
+            if counted is None:
+                raise
+            number = float(counted.group(1))  # the words name what is counted: not a unit
+            return Given(text, number, number, None)
         return Given(text, value, reading.value, reading.unit)
 
     def example(self, part: PartSpec) -> int:
