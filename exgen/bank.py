@@ -16,10 +16,11 @@ from pathlib import Path
 import yaml
 
 from . import expr
-from .domains import domain_of, drawn_values, parse_domain
 from .answertypes import answer_type, names as answer_type_names
+from .domains import domain_of, drawn_values, parse_domain
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .template import MistakeSpec, ParamSpec, PartSpec, ReportSpec, Template
+from .text import undeclared_names
 from .versions import data_digest
 
 BANKS_ENV = "EXGEN_BANKS"
@@ -357,8 +358,6 @@ class _Reader:
         return str(ref)
 
     def check_text(self, text: str, names: set, where) -> None:
-        from .text import undeclared_names
-
         try:
             unknown = undeclared_names(text) - names
         except ValueError as exc:

@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from .errors import InvalidDraw
+from .errors import ExgenError, InvalidDraw
 
 PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)")
 
@@ -107,11 +107,15 @@ class Derivation:
         self.steps: list[Step] = []
         self.mistakes: dict[str, dict[str, float]] = {}
         self.inserts: list[Table] = []
+        self.if_apart: set[tuple[str, str]] = set()  # (step, mistake) named only where they show
         self._by_name: dict[str, Step] = {}
 
     def step(self, name: str, value, unit: str = "", *, symbol: str | None = None,
              formula: str = "", note: str = "", shown: str = "", symbolic: bool = True):
         """Record a step and return its value (or the override for it, when re-running for ECF)."""
+        if name in self.params:
+            raise ExgenError(f"the solver names a step {name!r} like a given value: rename the step, so that "
+                             f"@{name} in a formula and an answer carried forward mean one thing")
         overridden = name in self.overrides
         if overridden:
             value = self.overrides[name]
@@ -135,9 +139,16 @@ class Derivation:
         self.inserts.append(table)
         return table
 
-    def mistake(self, step_name: str, mistake: str, value: float) -> None:
-        """Record what `step_name` comes out as by the known wrong method `mistake`."""
+    def mistake(self, step_name: str, mistake: str, value, *, if_apart: bool = False) -> None:
+        """Record what `step_name` comes out as by the known wrong method `mistake`.
+
+        A mistake a part names is kept apart from the part's answer in every draw (by the gap its answer
+        type sets: exgen.answertypes.base.MISTAKE_GAP tolerances): draws where it lands closer are redrawn.
+        With `if_apart`, for a slip that makes no difference in some configurations, such draws stand and
+        the slip is simply not named in them."""
         self.mistakes.setdefault(step_name, {})[mistake] = value
+        if if_apart:
+            self.if_apart.add((step_name, mistake))
 
     def require(self, condition: bool, reason: str) -> None:
         """Reject the draw (it is retried) when the drawn data give an invalid problem.
@@ -148,11 +159,6 @@ class Derivation:
             if self.strict:
                 raise InvalidDraw(reason)
             self.warnings.append(reason)
-
-    def require_apart(self, value: float, other: float, rel: float, what: str) -> None:
-        """Reject data for which a known wrong method lands within `rel` of the right value:
-        a sheet should ask only for effects a student's answer can show."""
-        self.require(abs(value - other) >= rel * abs(value), f"{what} changes the answer by less than {rel:.1%}")
 
     def __getitem__(self, name: str) -> Step:
         return self._by_name[name]

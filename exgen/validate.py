@@ -2,8 +2,8 @@
 
 Per variant: the constraints hold, every answer is a finite number of the asked kind, re-running
 the derivation with its own answers changes nothing (ECF is consistent), and the key grades
-itself at 100 %. Per template: every mistake a part names is recorded by the solver somewhere,
-mistakes rarely coincide with the right answer, and seeds give distinct problems.
+itself at 100 %. Per template: every mistake a part names is recorded by the solver and has words
+for the student, every part a part `uses:` changes its answer, and seeds give distinct problems.
 """
 from __future__ import annotations
 
@@ -15,10 +15,11 @@ from dataclasses import dataclass, field
 from .answertypes import answer_type
 from .draw import failed_requirement
 from .errors import ExgenError, FormatProblem, WrongKind
+from .mistake_messages import default_messages
 from .template import ReportSpec, Template
 from .variant import Variant, answer_for, make_variant, rerun
 
-COINCIDENCE_WARNING = 0.05  # share of draws where a mistake equals the answer
+USES_TRIALS = 5  # draws in which a part's answer must follow the parts it uses
 DISTINCT_WARNING = 0.9
 TRIES_WARNING = 5.0
 
@@ -88,6 +89,7 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
                 report.problems.append(f"seed {variant.seed}: {problem}")
     _check_mistakes(template, variants, report)
     _check_reports(template, variants, report)
+    _check_uses(template, variants, report)
     if report.distinct < DISTINCT_WARNING:
         report.warnings.append(f"only {report.distinct:.0%} of {len(variants)} seeds give distinct data: widen the ranges")
     if report.mean_tries > TRIES_WARNING:
@@ -156,20 +158,58 @@ def _check_key_grades_itself(variant: Variant) -> list[str]:
 
 
 def _check_mistakes(template: Template, variants: list[Variant], report: Report) -> None:
+    """Every mistake a part names is one the solver records, and has words for the student. (That it
+    never gives the right answer is enforced in every draw: exgen.variant.mistakes_apart.)"""
     for part in template.parts:
         for mistake in part.mistakes:
-            if part.type in ("integer", "choice"):
-                continue  # a whole-number or word answer may coincide: the right answer is checked first
-            values = [v.mistakes[part.id].get(mistake.when) for v in variants]
-            recorded = [(v, m) for v, m in zip(variants, values) if m is not None]
-            if not recorded:
-                report.problems.append(f"part {part.id}: names mistake {mistake.when!r}, which the solver never records")
-                continue
-            same = sum(1 for v, m in recorded if _coincides(v.answers[part.id].value, m, part))
-            if same / len(variants) > COINCIDENCE_WARNING:
-                report.warnings.append(
-                    f"part {part.id}: mistake {mistake.when!r} equals the right answer in {same} of {len(variants)} draws")
+            if not any(mistake.when in v.mistakes[part.id] for v in variants):
+                report.problems.append(f"part {part.id}: names mistake {mistake.when!r}, which the solver never "
+                                       "records apart from the answer")
+            if not mistake.say and mistake.when not in default_messages():
+                report.warnings.append(f"part {part.id}: mistake {mistake.when!r} has no `say:` and no default "
+                                       "message in exgen/data/mistakes.yaml")
 
 
-def _coincides(answer, mistake, part) -> bool:
-    return answer_type(part).matches(mistake, answer, part)
+def _check_uses(template: Template, variants: list[Variant], report: Report) -> None:
+    """A part that says it is worked from an earlier one (`uses:`) must change when that one does:
+    otherwise error carried forward would credit an answer the student's earlier one did not lead to."""
+    for part in template.parts:
+        for used_id in part.uses:
+            kind = answer_type(template.part(used_id))
+            depends = _depends(part, template.part(used_id), variants[:USES_TRIALS])
+            if depends is None:
+                report.problems.append(f"part {part.id}: uses ({used_id}), but {_a(kind.name)} answer is never "
+                                       "carried forward")
+            elif not depends:
+                report.problems.append(f"part {part.id}: uses ({used_id}), but its answer does not change when "
+                                       f"({used_id})'s does: work from it, or drop it from `uses:`")
+
+
+def _depends(part, used, variants: list[Variant]) -> bool | None:
+    """Whether some other answer to `used` moves `part`'s (None: answers of its type are never carried
+    forward). True also when the solver takes none of the values tried, so nothing is claimed."""
+    kind = answer_type(used)
+    tried = False
+    for variant in variants:
+        others = kind.nudges(variant.answers[used.id].value, used)
+        if not others:
+            return None
+        for other in others:
+            try:
+                again = answer_for(part, rerun(variant, kind.overrides(used, other, variant))).value
+            except (ExgenError, ValueError, ArithmeticError):
+                continue  # the solver refuses this value
+            tried = True
+            if not _same(again, variant.answers[part.id].value):
+                return True
+    return not tried
+
+
+def _same(a, b) -> bool:
+    if isinstance(a, float) and isinstance(b, float):
+        return math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12)
+    return a == b
+
+
+def _a(word: str) -> str:
+    return f"an {word}" if word[:1] in "aeiou" else f"a {word}"

@@ -10,6 +10,7 @@ from typing import Any, Mapping
 
 from . import units
 from .answertypes import answer_type
+from .answertypes.base import MISTAKE_GAP
 from .derivation import Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw
@@ -130,7 +131,7 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
     answers, mistakes = {}, {}
     for part in template.parts:
         answers[part.id] = answer_for(part, derivation)
-        mistakes[part.id] = MappingProxyType(mistakes_for(part, derivation))
+        mistakes[part.id] = MappingProxyType(mistakes_apart(part, answers[part.id].value, derivation, check))
     context = {p.name: p for p in params}
     return Variant(
         template=template, seed=seed, params=params, steps=tuple(derivation.steps),
@@ -140,6 +141,28 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         tries=tries, warnings=tuple(derivation.warnings) + tuple(found_warnings), inserts=tuple(derivation.inserts),
         derived=derived,
     )
+
+
+def mistakes_apart(part: PartSpec, answer, derivation: Derivation, check: bool = True) -> dict[str, Any]:
+    """The part's mistake values, each far enough from the answer that neither passes for the other
+    (MISTAKE_GAP times the tolerance; for an exact type, any difference). A mistake the part names that
+    lands closer rejects the draw (with `check`; else it is a warning, for values a user gave): a student
+    who made it would be marked right, and the sheet would not test what the part says it tests. One
+    recorded `if_apart`, or one the part does not name, is dropped instead."""
+    kind = answer_type(part)
+    named = {m.when for m in part.mistakes}
+    steps = kind.steps(part)
+    kept = {}
+    for name, wrong in mistakes_for(part, derivation).items():
+        if kind.apart(wrong, answer, part):
+            kept[name] = wrong
+        elif name in named and not any((s, name) in derivation.if_apart for s in steps):
+            reason = (f"part {part.id}: the mistake {name!r} lands within {MISTAKE_GAP:g} times "
+                      f"{kind.tolerance_text(part)} of the answer")
+            if check:
+                raise InvalidDraw(reason)
+            derivation.warnings.append(reason)
+    return kept
 
 
 def run_solver(template: Template, si: dict, overrides: dict | None = None, strict: bool = True) -> Derivation:

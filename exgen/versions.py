@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import hashlib
+import importlib.util
 import json
 from dataclasses import dataclass
 from functools import lru_cache
@@ -102,11 +103,9 @@ def file_hashes(version: TemplateVersion) -> dict[str, str]:
 
 @lru_cache(maxsize=1)
 def _roots() -> dict[str, Path]:
-    import graders
-
-    from . import __file__ as exgen_init
-
-    return {"exgen": Path(exgen_init).parent, "graders": Path(graders.__file__).parent}
+    """Where each package's files are; graders is found, not imported (exgen never imports it)."""
+    graders = importlib.util.find_spec("graders")
+    return {"exgen": Path(__file__).parent, "graders": Path(graders.origin).parent}
 
 
 def _relative(path: Path) -> str:

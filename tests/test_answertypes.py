@@ -121,3 +121,12 @@ def test_defaults_come_from_the_type(tmp_path):
     assert load(tmp_path, "unit: rpm").part("a").tol == answer_type("number").default_tol
     assert load(tmp_path, "type: angle").part("a").tol == answer_type("angle").default_tol
     assert PartSpec("a", "x", "v").tol == answer_type("number").default_tol
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_other_answers_tried_for_uses_differ_from_the_answer(kind):
+    """validate nudges an earlier answer to check that a part which `uses:` it follows it."""
+    answers = answer_type(kind)
+    part = answers.sample_part()
+    value = answers.example(part)
+    assert all(other != value for other in answers.nudges(value, part))

@@ -87,9 +87,12 @@ def test_example_1_5_flat_belt(bank):
     # the figures a student should reach: 168.8 deg, 5.236 m/s, 6.146 / 6.070 / 5.997 kW, 289.8 / 695.6 N m
     assert [round(got[k], 3) for k in "abcdefg"] == [168.842, 5.236, 6.146, 6.070, 5.997, 289.827, 695.585]
     # The example's belt runs slowly: Tc = 24.7 N is 1.2 % of T_max, so (c) and (d) differ by 1.2 %.
-    # Drawn variants keep Tc above 3 % of T_max so that ignoring it is a visible mistake.
-    assert warnings == ["centrifugal tension too small to matter",
-                        "belt density 2812 kg/m³ is outside the plausible 1000-1500 kg/m³"]
+    # Drawn variants keep a named mistake three tolerances from the answer, so that ignoring Tc is visible:
+    # these data would not be drawn, for every part where Tc enters.
+    assert warnings == [f"part {part}: the mistake {name!r} lands within 3 times 1 % of the answer" for part, name in
+                        (("d", "centrifugal_ignored"), ("d", "tc_not_subtracted"), ("f", "centrifugal_ignored"),
+                         ("g", "centrifugal_ignored"))] + ["belt density 2812 kg/m³ is outside the plausible 1000-1500 kg/m³"]
+
 
 
 def test_examples_1_5_and_1_6_mass_tension_and_the_larger_pulleys_angle(bank):

@@ -179,6 +179,12 @@ class AnswerType:
         """A generic slip that explains a wrong answer (units confused, the sign, ...), if any."""
         return None
 
+    def nudges(self, value, part: PartSpec) -> tuple:
+        """Other values of this type, nearest first, to check that a later part follows this one
+        (validate: a count or a choice worked from it changes only past some threshold); empty when
+        answers of this type are never carried forward."""
+        return ()
+
     def overrides(self, part: PartSpec, value, variant) -> dict[str, Any]:
         """Step values (in the steps' units) that put the student's answer into the derivation, for
         error carried forward; empty when an answer of this type cannot be carried."""

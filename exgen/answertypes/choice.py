@@ -77,6 +77,15 @@ class Choice(AnswerType):
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return WRONG_CHOICE
 
+    def nudges(self, value, part: PartSpec) -> tuple[str, ...]:
+        return tuple(c for c in part.options.get("choices", ()) if not choice(c, value, choice_aliases()))
+
+    def overrides(self, part: PartSpec, value, variant) -> dict[str, str]:
+        """The listed choice the student's word stands for, in the answer's step: later steps that
+        follow from the choice (a direction, a sense) are worked from the student's."""
+        meant = next((c for c in part.options.get("choices", ()) if choice(value, c, choice_aliases())), None)
+        return {part.answer: meant} if meant is not None else {}
+
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "does the power increase or decrease?", "trend", type=self.name,
                         options={"choices": ("increase", "decrease")})

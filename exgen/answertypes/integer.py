@@ -61,6 +61,9 @@ class Integer(AnswerType):
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_EXACT if float(given.value).is_integer() else NOT_A_WHOLE_NUMBER
 
+    def nudges(self, value, part: PartSpec) -> tuple[int, ...]:
+        return (value + 1, value + 2, 2 * value + 1)
+
     def overrides(self, part: PartSpec, value, variant) -> dict[str, float]:
         return {part.answer: units.convert(float(value), part.unit, variant.step(part.answer).unit)}
 

@@ -138,6 +138,9 @@ class Number(AnswerType):
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_WITHIN.format(tol=self.tolerance_text(part))
 
+    def nudges(self, value, part: PartSpec) -> tuple[float, ...]:
+        return (value * 1.02, value * 0.5, value * 2, -value) if value else (1.0, -1.0)
+
     def overrides(self, part: PartSpec, value, variant) -> dict[str, float]:
         return {part.answer: units.convert(float(value), part.unit, variant.step(part.answer).unit)}
 

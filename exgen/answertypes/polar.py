@@ -159,6 +159,10 @@ class PolarType(AnswerType):
             return Mistake("magnitude_wrong", ANGLE_ONLY)
         return None
 
+    def nudges(self, value: Polar, part: PartSpec) -> tuple[Polar, ...]:
+        size = value.magnitude or 1.0
+        return tuple(Polar.of(size * k, value.angle_deg + turn) for k, turn in ((1.02, 2.0), (0.5, 90.0), (2.0, 180.0)))
+
     def overrides(self, part: PartSpec, value: Polar, variant) -> dict[str, float]:
         """Both halves: the size in its step's unit, the angle in its own."""
         direction = part.options["angle"]

@@ -161,6 +161,9 @@ class Symbolic(AnswerType):
             return Mistake("extra_root", ROOTED)
         return None
 
+    def nudges(self, value: Expression, part: PartSpec) -> tuple[Expression, ...]:
+        return tuple(Expression(("mul", ("num", k), value.tree), value.symbols) for k in (1.02, 2.0))
+
     def overrides(self, part: PartSpec, value: Expression, variant) -> dict[str, Expression]:
         """The student's formula takes the expected one's place: later steps evaluate it."""
         return {part.answer: value}

@@ -10,8 +10,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import balancing as mb
-from .polygons import (APART, APART_DEG, angle_gap_deg, closing_angle, components, magnitude_formula,
-                       require_angle_apart, require_polar_apart)
+from .polygons import closing_angle, components, magnitude_formula
 
 PI = math.pi
 #: The course text's balancing table: a row per plane.
@@ -102,17 +101,12 @@ def two_plane_balance(p, d):
 
 
 def _two_plane_mistakes(p, d, rows, l_q):
-    (q_mr, q_angle), (p_mr, p_angle) = mb.two_plane_correction(rows, l_q)
-    right_q, right_p = (q_mr / p.rQ, q_angle), (p_mr / p.rP, p_angle)
     (q2, qa2), (p2, pa2) = mb.two_plane_correction([(mr, abs(l), a) for mr, l, a in rows], l_q)
     wrong_q, wrong_p = (q2 / p.rQ, qa2), (p2 / p.rP, pa2)
-    require_polar_apart(d, right_q, wrong_q, "the sign of a plane's distance")
-    require_polar_apart(d, right_p, wrong_p, "the sign of a plane's distance")
     for part, (size, angle) in (("Q", wrong_q), ("P", wrong_p)):
         d.mistake(f"m{part}", "sign_lost", size)
         d.mistake(f"theta_{part}", "sign_lost", angle)
     left_out = mb.balancing_vector([(mr, a) for mr, _, a in rows])
-    require_polar_apart(d, right_p, (left_out[0] / p.rP, left_out[1]), "Q's correction")
     d.mistake("mP", "q_correction_left_out", left_out[0] / p.rP)
     d.mistake("theta_P", "q_correction_left_out", left_out[1])
     d.mistake("theta_Q", "resultant_not_balance", d.value_of("theta_Q") + PI)
@@ -139,21 +133,18 @@ def complete_balance_position(p, d):
     mr_b = d.step("mrB", math.hypot(fx, fy), "kg*m", symbol=r"m_B r_B", formula=magnitude_formula("F_0", "F_90"),
                   note="B closes the force polygon")
     theta_b = closing_angle(d, "theta_B", r"\theta_B", "F_0", "F_90")
-    m_b = d.step("mB", mr_b / p.rB, "kg", symbol=r"m_B", formula=r"\frac{@mrB}{@rB}")
+    d.step("mB", mr_b / p.rB, "kg", symbol=r"m_B", formula=r"\frac{@mrB}{@rB}")
 
     # A's distance taken as positive: the moment polygon, and all that follows, changes
     signless = mb.balancing_vector([(mr_a * p.lAB, p.thetaA), (p.mC * p.rC * p.lBC, 0.0)])
     x_signless = signless[0] / mr_d - p.lBC
-    d.require(abs(x_signless - x) >= APART * x, "the sign of A's distance changes x by less than 3 %")
     b_signless = mb.balancing_vector([(mr_a, p.thetaA), (p.mC * p.rC, 0.0), (mr_d, signless[1])])
     d.mistake("x", "sign_lost", x_signless)
     d.mistake("mB", "sign_lost", b_signless[0] / p.rB)
     for step, value in (("theta_D", signless[1]), ("theta_B", b_signless[1])):
-        if angle_gap_deg(value, d.value_of(step)) >= APART_DEG:  # the sign may leave an angle where it was
-            d.mistake(step, "sign_lost", value)
+        d.mistake(step, "sign_lost", value, if_apart=True)  # the sign may leave an angle where it was
     d.mistake("x", "distance_from_reference", l_d)
     without_d = mb.balancing_vector([(mr_a, p.thetaA), (p.mC * p.rC, 0.0)])
-    require_polar_apart(d, (m_b, theta_b), (without_d[0] / p.rB, without_d[1]), "D's mass")
     d.mistake("mB", "d_left_out", without_d[0] / p.rB)
     d.mistake("theta_B", "d_left_out", without_d[1])
     d.mistake("theta_D", "resultant_not_balance", theta_d + PI)
@@ -191,12 +182,10 @@ def complete_balance_masses(p, d):
 
     # every eccentricity taken as equal (masses used for m·r): θ_D is unchanged, the masses are not
     ratio = p.rBC / p.rAD
-    d.require(abs(ratio - 1) >= APART, "A and D at nearly the eccentricity of B and C")
     for step, value in (("mA", m_a / ratio), ("mD", m_d / ratio), ("lD", l_d * ratio)):
         d.mistake(step, "eccentricity_ignored", value)
     flipped = theta_d + PI
     d.mistake("theta_D", "resultant_not_balance", flipped)
-    require_angle_apart(d, theta_d, p.thetaA, "D's direction against A's")
 
 
 def bearing_reactions(p, d):
@@ -239,7 +228,6 @@ def _bearing_mistakes(p, d, forces):
         d.mistake(f"F{tag}", "mm_for_m", force * 1000)
         d.mistake(f"theta_F{tag}", "balance_direction", angle - PI)
     for tag, other in (("Y", "X"), ("X", "Y")):
-        require_polar_apart(d, forces[tag], forces[other], "swapping the bearings")
         d.mistake(f"F{tag}", "bearings_swapped", forces[other][0])
         d.mistake(f"theta_F{tag}", "bearings_swapped", forces[other][1])
     # A's distance taken as positive
@@ -250,12 +238,10 @@ def _bearing_mistakes(p, d, forces):
     r_x = mb.balancing_vector([(mr, a) for mr, _, a in rows] + [r_y])
     for tag, (size, angle) in (("Y", r_y), ("X", r_x)):
         wrong = (mb.rotating_force(size, p.N), angle + PI)
-        require_polar_apart(d, forces[tag], wrong, "the sign of A's distance")
         d.mistake(f"F{tag}", "sign_lost", wrong[0])
         d.mistake(f"theta_F{tag}", "sign_lost", wrong[1])
     without_y = mb.balancing_vector([(mr, a) for mr, _, a in rows])
     wrong = (mb.rotating_force(without_y[0], p.N), without_y[1] + PI)
-    require_polar_apart(d, forces["X"], wrong, "Y's reaction")
     d.mistake("FX", "reaction_left_out", wrong[0])
     d.mistake("theta_FX", "reaction_left_out", wrong[1])
 
@@ -289,6 +275,5 @@ def correction_plane_position(p, d):
     d.mistake("theta_X", "resultant_not_balance", theta_x + PI)
     d.mistake("x", "radius_forgotten", moment / p.B1)
     left_out = mb.balancing_vector([(mr, a) for mr, _, a in rows])
-    require_polar_apart(d, (d.value_of("mX"), theta_x), (left_out[0] / p.bX, left_out[1]), "the correction's force")
     d.mistake("mX", "q_correction_left_out", left_out[0] / p.bX)
     d.mistake("theta_X", "q_correction_left_out", left_out[1])

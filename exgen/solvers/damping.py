@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 
 from ..mechanics import vibration as vb
-from .vibration import APART
 
 #: Damping ratios of real dampers on machines and mountings: well under critical.
 ZETA_MAX = 0.6
@@ -54,7 +53,6 @@ def damped_spring_mass(p, d):
     fd = d.step("f_d", vb.frequency(wd), "Hz", symbol=r"f_d", formula=r"\frac{@omega_d}{2\pi}")
     d.mistake("f_d", "omega_for_f", wd)
     d.mistake("f_d", "damping_ignored", vb.frequency(omega))
-    d.require_apart(fd, vb.frequency(omega), APART, "the damping")
     d.step("T_d", 1 / fd, "s", symbol=r"T_d", formula=r"\frac{1}{@f_d}", note="the periodic time, eq. 6.45")
     d.mistake("T_d", "omega_for_f", 1 / wd)
     d.mistake("T_d", "damping_ignored", 1 / vb.frequency(omega))

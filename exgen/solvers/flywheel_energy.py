@@ -103,7 +103,6 @@ def fluctuating_resistance(p, d):
                      note="greatest less least energy above the resisting torque, from θ = 0")
     cs2 = d.step("Cs_2", fw.coefficient_of_fluctuation(delta_2, p.I, w), "", symbol=r"C_{s2}",
                  formula=r"\frac{@dE_2}{@I\,@N^2}")
-    d.require_apart(cs2, cs1, 0.05, "the fluctuating resisting torque")
     d.mistake("Cs_2", "constant_resistance", cs1)
     d.mistake("Cs_2", "half_band", cs2 / 2)
     d.mistake("Cs_2", "rpm_as_rad_s", delta_2 / (p.I * (w / RPM) ** 2))

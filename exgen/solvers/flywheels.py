@@ -13,13 +13,7 @@ import string
 
 from ..mechanics import flywheels as fw
 
-#: A named mistake is recorded only where it lands this far from the right value (parts at 1 %).
-APART = 0.03
 MM2 = 1e-6
-
-
-def _apart(right: float, wrong: float, rel: float = APART) -> bool:
-    return abs(wrong - right) >= rel * abs(right)
 
 
 def _loop_areas(p, count: int) -> list[float]:
@@ -64,8 +58,7 @@ def _energy(p, d, dA: float, largest: float) -> float:
     delta_e = d.step("dE", dA * e, "J", symbol=r"\Delta E", formula=r"@dA\,@e")
     d.mistake("dE", "one_scale_only", dA * p.Ts)
     d.mistake("dE", "angle_scale_in_degrees", dA * p.Ts * math.degrees(p.As))
-    if _apart(delta_e, largest * e):
-        d.mistake("dE", "largest_loop", largest * e)
+    d.mistake("dE", "largest_loop", largest * e, if_apart=True)
     return delta_e
 
 

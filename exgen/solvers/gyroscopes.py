@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 
 from ..mechanics import gyroscopes as gy
-from .slips import APART
 KMH = 1 / 3.6
 
 #: How a direction in the vehicle's axes (x forward, y left, z up) is said on a road vehicle and on a ship.

@@ -14,7 +14,7 @@ import math
 from ..mechanics import linkages as lk
 from .fourbars import GRASHOF_REASON
 from .angles import difference, direction
-from .polygons import APART, angle_gap_deg, require_angle_apart
+from .polygons import angle_gap_deg
 
 SENSES = ("clockwise", "counter-clockwise")
 PIVOT = {"M": "E", "N": "F"}   # the ground pivots of the links to M and to N
@@ -41,9 +41,6 @@ def actuator_swing(p, d):
                            formula=rf"@beta {sign} @angle{k}", note=f"B on the {p.side} of the line from A to O")
         d.mistake(f"theta{k}", "other_side", lk.wrap(beta - turn * angle))
         d.mistake(f"theta{k}", "interior_angle", angle)
-        if d.strict:
-            require_angle_apart(d, angles[k], beta - turn * angle, "the other side of AO")
-            require_angle_apart(d, angles[k], angle, "the interior angle")
         d.require(math.radians(25) <= angle <= math.radians(155), "the actuator nearly in line with the link")
     rotation = lk.wrap(angles[2] - angles[1])
     size = difference(d, "rotation", r"\Delta\theta", "angle1", "angle2",
@@ -80,8 +77,7 @@ def two_position_synthesis(p, d):
         mid = (x1 + x2) / 2
         d.mistake(f"xO{name}", "midpoint", mid)
         below_mid = math.hypot(x1 - mid, y1)
-        if abs(below_mid - lengths[name]) >= APART * lengths[name]:
-            d.mistake(f"R{name}", "midpoint", below_mid)
+        d.mistake(f"R{name}", "midpoint", below_mid, if_apart=True)
     ground = difference(d, "ground", "EF", "xON", "xOM", note="the ground link", unit="m")
     g = lk.grashof(ground, lengths["M"], p.b, lengths["N"])
     d.step("kind", g.kind, "", symbol=r"\text{class}",
@@ -109,7 +105,7 @@ def _require_buildable(p, d, points, pivots, ground) -> None:
         length = d.value_of(f"R{name}")
         d.require(0.25 * p.b <= length <= 4 * p.b, "a link out of proportion to the coupler")
         mid = (points[f"{name}1"][0] + points[f"{name}2"][0]) / 2
-        d.require(abs(pivots[name][0] - mid) >= APART * length, "the pivot is nearly below the midpoint")
+        d.require(abs(pivots[name][0] - mid) >= 0.03 * length, "the pivot is nearly below the midpoint")
     d.require(ground >= 0.25 * p.b, "the ground pivots too close together")
     for name in ("M", "N"):
         (x1, y1), (x2, y2), o = points[f"{name}1"], points[f"{name}2"], pivots[name]

@@ -10,10 +10,6 @@ import math
 
 from .angles import direction_formula
 
-#: How far a known wrong method must land from the right answer for a sheet to test it: sizes
-#: are graded at 1 % and angles at 1°, so 3 % and 3° leave a clear gap.
-APART = 0.03
-APART_DEG = 3.0
 #: Below this fraction of the terms' sizes, a sum is float noise: exactly zero.
 ZERO = 1e-9
 
@@ -78,17 +74,3 @@ def angle_gap_deg(a: float, b: float) -> float:
     """The gap between two directions (radians) in degrees, 0-180."""
     gap = math.degrees(a - b) % 360.0
     return min(gap, 360.0 - gap)
-
-
-def polar_apart(right: tuple[float, float], wrong: tuple[float, float]) -> bool:
-    """A wrong (size, angle) a student's answer can tell from the right one."""
-    size, angle = right
-    return abs(wrong[0] - size) >= APART * abs(size) or angle_gap_deg(wrong[1], angle) >= APART_DEG
-
-
-def require_polar_apart(d, right, wrong, what: str) -> None:
-    d.require(polar_apart(right, wrong), f"{what} changes the answer by less than {APART:.0%} or {APART_DEG:g}°")
-
-
-def require_angle_apart(d, right: float, wrong: float, what: str) -> None:
-    d.require(angle_gap_deg(right, wrong) >= APART_DEG, f"{what} moves the angle by less than {APART_DEG:g}°")

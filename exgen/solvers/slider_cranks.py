@@ -12,7 +12,6 @@ import math
 from ..mechanics import linkages as lk
 from ..mechanics.slider_cranks import slider_crank as solve_slider
 from .angles import between
-from .polygons import APART, APART_DEG, angle_gap_deg
 
 SLIDE_OF = {"right": "horizontal", "left": "horizontal", "below": "vertical", "above": "vertical"}
 OTHER = {"right": "left", "left": "right", "below": "above", "above": "below"}
@@ -54,8 +53,8 @@ def slider_crank(p, d):
     phi3 = d.step("phi3", lk.wrap(_direction(where, theta3)), "rad", symbol=r"\varphi_3", formula=formula,
                   note=f"the coupler B → C from +x, {note}")
     formula, note = L4[where]
-    l4 = d.step("L4", _distance(where, p.L2, p.L3, p.theta2, theta3), "m", symbol="L_4", formula=formula,
-                note=f"{note}, along the line of slide")
+    l4 = d.step("L4", _distance(where, p.L2, p.L3, p.theta2, _from_direction(where, phi3)), "m", symbol="L_4",
+                formula=formula, note=f"{note}, along the line of slide")
     text_gamma = math.pi - (p.theta2 + theta3)
     if where in ("right", "below") and 0 <= text_gamma <= math.pi:
         d.step("gamma", text_gamma, "rad", symbol=r"\gamma", formula=r"180^\circ - (@theta2 + @theta3)",
@@ -77,6 +76,11 @@ def _direction(where: str, theta3: float) -> float:
     return {"right": -theta3, "left": math.pi + theta3, "below": -theta3, "above": theta3}[where]
 
 
+def _from_direction(where: str, phi3: float) -> float:
+    """θ3 back from the coupler's direction: L4 is worked from (a)'s answer, so an error there carries."""
+    return {"right": -phi3, "left": phi3 - math.pi, "below": -phi3, "above": phi3}[where]
+
+
 def _distance(where: str, crank: float, coupler: float, theta2: float, theta3: float) -> float:
     s, c = math.sin, math.cos
     return {"right": crank * c(theta2) + coupler * c(theta3), "left": coupler * c(theta3) - crank * c(theta2),
@@ -85,13 +89,13 @@ def _distance(where: str, crank: float, coupler: float, theta2: float, theta3: f
 
 def _mistakes(p, d, where: str, position) -> None:
     """The other branch, the size of θ3 without its sense, γ's supplement and the offset left out:
-    each recorded where the data let it show (3° or 3 % from the right answer)."""
+    each named only where the data let it show (by the answer's tolerance: exgen.variant.mistakes_apart)."""
     slide = SLIDE_OF[where]
     other = solve_slider(p.L2, p.L3, p.L1, p.theta2, slide, OTHER[where])
-    theta3, phi3, l4, gamma = position.theta3, d.value_of("phi3"), d.value_of("L4"), d.value_of("gamma")
-    _angle_mistake(d, "phi3", "magnitude_only", phi3, theta3)
-    _angle_mistake(d, "phi3", "wrong_branch", phi3, other.direction)
-    _angle_mistake(d, "gamma", "supplement", gamma, math.pi - gamma)
+    theta3, l4, gamma = position.theta3, d.value_of("L4"), d.value_of("gamma")
+    _angle_mistake(d, "phi3", "magnitude_only", theta3)
+    _angle_mistake(d, "phi3", "wrong_branch", other.direction)
+    _angle_mistake(d, "gamma", "supplement", math.pi - gamma)
     d.mistake("L4", "wrong_branch", distance_along(other, where))
     ux, uy = TOWARDS[where]
     along = "xP" if slide == "horizontal" else "yP"
@@ -99,12 +103,10 @@ def _mistakes(p, d, where: str, position) -> None:
               else (p.yA + other.c[1] + uy * p.tip))
     if p.L1 > 0:
         inline = solve_slider(p.L2, p.L3, 0.0, p.theta2, slide, where)
-        _angle_mistake(d, "phi3", "offset_ignored", phi3, inline.direction)
-        if abs(distance_along(inline, where) - l4) >= APART * abs(l4):
-            d.mistake("L4", "offset_ignored", distance_along(inline, where))
+        _angle_mistake(d, "phi3", "offset_ignored", inline.direction)
+        d.mistake("L4", "offset_ignored", distance_along(inline, where), if_apart=True)
     d.require(not d.strict or l4 > 0.2 * p.L3, "the slider would sit behind the crank pivot")
 
 
-def _angle_mistake(d, step: str, name: str, right: float, wrong: float) -> None:
-    if angle_gap_deg(right, wrong) >= APART_DEG:
-        d.mistake(step, name, wrong)
+def _angle_mistake(d, step: str, name: str, wrong: float) -> None:
+    d.mistake(step, name, wrong, if_apart=True)

@@ -11,7 +11,7 @@ import math
 
 from ..mechanics import vibration as vb
 from .damping import decrement_steps
-from .vibration import APART, natural_frequency
+from .vibration import natural_frequency
 
 
 def lever_equivalent(p, d):
@@ -37,7 +37,6 @@ def lever_equivalent(p, d):
     natural_frequency(d, "K_T", "m_T", note=r"$m_T\ddot{x} + K_T x = 0$ at B")
     d.mistake("f_n", "wrong_axis", vb.frequency(vb.natural_speed(k, total - right_rod + wrong_rod)))
     d.require(0.5 <= d.value_of("f_n") <= 30, "a natural frequency outside 0.5-30 Hz")
-    d.require_apart(total, total - right_rod + wrong_rod, APART, "the rod's axis")
 
 
 def beam_two_springs(p, d):
@@ -45,7 +44,7 @@ def beam_two_springs(p, d):
     beam = d.step("I_beam", p.m * p.k ** 2, "kg*m^2", symbol=r"I_{\mathrm{beam}}", formula=r"@m\,@k^2",
                   note="about O, with the radius of gyration about O")
     ball = d.step("I_ball", p.m_B * p.b ** 2, "kg*m^2", symbol=r"I_{\mathrm{ball}}", formula=r"@m_B\,@b^2")
-    inertia = d.step("I_O", beam + ball, "kg*m^2", symbol="I_O", formula=r"@I_beam + @I_ball")
+    d.step("I_O", beam + ball, "kg*m^2", symbol="I_O", formula=r"@I_beam + @I_ball")
     d.mistake("I_O", "ball_ignored", beam)
     q = d.step("q", p.K * (p.a ** 2 + p.b ** 2), "N*m", symbol="q", formula=r"@K\,(@a^2 + @b^2)",
                note="a turn θ stretches each spring by its distance from O times θ, and each pushes back with "
@@ -54,7 +53,6 @@ def beam_two_springs(p, d):
     natural_frequency(d, "q", "I_O", torsional=True, note=r"from $I_O\ddot{\theta} + q\,\theta = 0$")
     d.mistake("f_n", "ball_ignored", vb.frequency(vb.natural_speed(q, beam)))
     d.require(1 <= d.value_of("f_n") <= 40, "a natural frequency outside 1-40 Hz")
-    d.require_apart(inertia, beam, APART, "the ball")
 
 
 def _equivalent_check(p, d):
@@ -87,7 +85,6 @@ def damped_pendulum_lever(p, d):
                    note=r"from $I_D\ddot{\theta} + C a^2\dot{\theta} + q\,\theta = 0$")
     d.mistake("omega_n", "pendulum_ignored", math.sqrt(p.K * p.b ** 2 / inertia))
     d.mistake("omega_n", "omega_for_f", vb.frequency(omega))
-    d.require_apart(omega, math.sqrt(p.K * p.b ** 2 / inertia), APART, "the pendulum")
     mass = d.step("m_T", inertia / p.a ** 2, "kg", symbol=r"m_T", formula=r"\frac{@I_D}{@a^2}",
                   note=r"the equivalent mass at A, the dashpot: $I_{ADE}/DA^2 + M(DE/DA)^2 + m_p$")
     _equivalent_check(p, d)
