@@ -88,3 +88,25 @@ def test_figures_are_deterministic(bank):
     for template_id in ("flywheels.speed_fluctuation", "flywheels.flywheel_rim", "flywheels.torque_time"):
         template = bank.get(template_id)
         assert figure_svg(make_variant(template, 11)) == figure_svg(make_variant(template, 11))
+
+
+def test_turning_moment_curve_is_the_equation(bank):
+    variant = variant_of(bank, "flywheels.turning_moment_equation", T0=14500, b=2300, c=-1900, n=2)
+    svg = figure_svg(variant)
+    points = _curve(svg)
+    (mean,) = elements(svg, "mean-line")
+    y0 = float(mean.get("y1"))
+    ys = [y for _, y in points]
+    swing = (max(ys) - min(ys)) / 2
+    # the curve swings √(b² + c²) either side of T₀, drawn to the same scale as T₀ above the axis
+    assert swing / abs(y0 - max(float(e.get("y1")) for e in elements(svg, "axis"))) == pytest.approx(
+        2983.3 / 14500, rel=2e-3)
+    assert (max(ys) + min(ys)) / 2 == pytest.approx(y0, abs=0.05)
+    assert "T₀ = 14500 N·m" in texts(svg)
+
+
+def test_fluctuating_resistance_is_drawn_dashed(bank):
+    variant = variant_of(bank, "flywheels.fluctuating_resistance", T0=5000, b=1500, n=3, r=600)
+    svg = figure_svg(variant)
+    (resisting,) = elements(svg, "resisting-curve", "path")
+    assert resisting.get("stroke-dasharray") and "resisting torque" in texts(svg)

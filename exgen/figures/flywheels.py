@@ -142,3 +142,64 @@ def _time_labels(drawing: Drawing, marks: list[tuple[float, str]]) -> float:
         drawing.text((x, 20 + 14 * row), text, size=TICK, cls="tick")
         rows[row] = box.x1
     return 20 + 14 * (len(rows) - 1)
+
+
+# ---- Problems 3.2 and 3.5: a turning moment given as an equation -------------------------------
+
+CURVE_W, CURVE_H = 480.0, 150.0
+LINE_W = 1.3
+CURVE_POINTS = 241
+
+
+def turning_moment_curve(variant) -> str:
+    """The engine's turning moment over one revolution, drawn from its equation about the line T₀, with
+    the fluctuating resisting torque dashed where the problem has one."""
+    from ..mechanics.turning_moment import TrigTorque
+
+    t0 = need(variant, "T0")
+    n = int(round(need(variant, "n").si))
+    b = shown(variant, "b")
+    c = shown(variant, "c")
+    engine = TrigTorque(t0.si, ((n, b.si if b else 0.0, c.si if c else 0.0),))
+    r = shown(variant, "r")
+    resisting = TrigTorque(t0.si, ((1, r.si, 0.0),)) if r is not None else None
+    thetas = [2 * math.pi * k / (CURVE_POINTS - 1) for k in range(CURVE_POINTS)]
+    curves = [engine] + ([resisting] if resisting else [])
+    low = min(min(curve.at(t) for t in thetas) for curve in curves)
+    high = max(max(curve.at(t) for t in thetas) for curve in curves)
+    sy = CURVE_H / (high - min(low, 0.0) or 1.0)
+    sx = CURVE_W / (2 * math.pi)
+
+    def at(theta: float, torque: float) -> tuple[float, float]:
+        return theta * sx, -torque * sy
+
+    drawing = Drawing()
+    base = -min(low, 0.0) * sy  # the θ axis at T = 0
+    drawing.line((0, base), (CURVE_W + 30, base), THIN, cls="axis")
+    drawing.arrowhead((CURVE_W + 30, base), (1, 0))
+    drawing.text((CURVE_W + 30, base + 20), "θ", anchor="end", style="italic")
+    drawing.line((0, base), (0, -high * sy - 30), THIN, cls="axis")
+    drawing.arrowhead((0, -high * sy - 30), (0, -1))
+    drawing.text((8, -high * sy - 22), "T", anchor="start", style="italic")
+    for k in range(5):
+        x = k * CURVE_W / 4
+        drawing.line((x, base), (x, base + 5), THIN)
+        drawing.text((x, base + 20), f"{90 * k}°", size=TICK, cls="tick")
+    y0 = -t0.si * sy
+    drawing.line((0, y0), (CURVE_W + 10, y0), THIN, dash="8 3 2 3", cls="mean-line")
+    drawing.place([((-8, y0 + 5), "end")], t0.label("T₀"))
+    drawing.path("M " + " L ".join(f"{num(a)},{num(b_)}" for a, b_ in (at(t, engine.at(t)) for t in thetas)),
+                 cls="torque-curve")
+    if resisting is not None:
+        drawing.path("M " + " L ".join(f"{num(a)},{num(b_)}" for a, b_ in (at(t, resisting.at(t)) for t in thetas)),
+                     THIN, dash="3 3", cls="resisting-curve")
+    # a legend above the plot, clear of both curves
+    top = -high * sy - 30
+    entries = [("engine's turning moment", LINE_W, "")] + ([("resisting torque", THIN, "3 3")] if resisting else [])
+    x = CURVE_W - 120
+    for k, (name, width, dash) in enumerate(entries):
+        y = top - 18 * (len(entries) - 1 - k)
+        drawing.line((x, y - 4), (x + 28, y - 4), width, dash=dash, cls="legend")
+        drawing.text((x + 34, y), name, anchor="start", cls="legend-label")
+    return drawing.svg("The turning moment over one revolution" + (", with the fluctuating resisting torque dashed"
+                                                                    if resisting is not None else ""))
