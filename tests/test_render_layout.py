@@ -82,3 +82,26 @@ def test_a_section_heading_never_ends_a_page(preamble, gap):
     source = preamble + f'#v({gap}pt)\n#section[{_mark("heading")}Worked solution]\n{_mark("next")}Text that follows.\n'
     page = {m["name"]: m["page"] for m in marks(source, "probe")}
     assert page["heading"] == page["next"]
+
+
+#: Measures each worked line instead of drawing it: its equation's natural width against the room beside
+#: the part column (the rows are planned before typesetting, from an estimate of each term's width).
+MEASURED_LINE = r'''
+#let work-line(equation, parts, note) = layout(size => {
+  let room = size.width - measure(strong(parts)).width - 0.8em.to-absolute()
+  [#metadata((width: measure(equation).width.pt(), room: room.pt())) <line-width>]
+})
+'''
+
+
+def test_no_worked_line_is_wider_than_the_page(bank):
+    templates = [t.id for t in bank]
+    for seed in (b"w" * 32, b"v" * 32):
+        assignment = Assignment("w", "Widths", tuple(QuestionSpec(f"q{i}", t) for i, t in enumerate(templates, start=1)))
+        source = key_typst(build_sheet(assignment, Student("A1"), bank, seed))
+        at = source.index("#let section(")
+        source = source[:at] + MEASURED_LINE + source[at:]
+        lines = marks(source, "line-width")
+        assert len(lines) > 5 * len(templates)
+        too_wide = [m for m in lines if m["width"] > m["room"] + 0.5]
+        assert not too_wide, too_wide[:5]
