@@ -1,8 +1,10 @@
 """A whitelist evaluator for small arithmetic expressions over named numbers.
 
-Template constraints ("d2 > d1") and symbolic answers are read with `ast.parse` and walked
-node by node: only numbers, the given names, arithmetic, comparisons, boolean logic and the
-functions below are allowed. Nothing is ever handed to Python's own evaluator.
+A template's own expressions (`require:` conditions such as "d2 > d1", `report:` values, `equals:`)
+are read with `ast.parse` and walked node by node: only numbers, the given names, arithmetic,
+comparisons, boolean logic and the functions below are allowed. Nothing is ever handed to Python's own
+evaluator. Students' formulas never come here: they have a grammar of their own
+(exgen.answertypes.expressions).
 """
 from __future__ import annotations
 
