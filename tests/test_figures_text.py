@@ -111,7 +111,7 @@ def test_pdfs_use_one_family_for_text_and_figures(bank, tmp_path):
     from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
     from exgen.render.pdf import key_pdf, sheet_pdf
 
-    ids = [t.id for t in bank if t.figure][:6]
+    ids = [t.id for t in bank if t.figure or t.key_figures]  # every figure, and every statement with one
     assignment = Assignment(id="t", title="T", questions=tuple(QuestionSpec(f"q{i}", tid) for i, tid in enumerate(ids, 1)))
     sheet = build_sheet(assignment, Student("s1"), bank, b"k" * 32)
     figures = draw_figures(sheet)
@@ -120,3 +120,20 @@ def test_pdfs_use_one_family_for_text_and_figures(bank, tmp_path):
                  for name in [name.decode()]}
         families = {f.split("-")[0] for f in fonts}
         assert families <= {"NewCM10", "NewCMMath"}, fonts
+
+
+@pytest.mark.parametrize("prose, typst_text", [("gear 1's speed", "gear 1\u2019s speed"), ("l\u2083' = 2 m", "l\u2083\u2032 = 2 m"),
+                                               ("the arm's joint", "the arm's joint")])
+def test_apostrophes_after_digits_never_become_the_text_face_s_missing_prime(prose, typst_text):
+    """Typst would set ' after a digit as a prime, which the body face lacks (another font would show)."""
+    from exgen.render.mathtext import escape_typst
+
+    assert escape_typst(prose) == typst_text
+
+
+def test_primes_in_figures_come_from_the_math_face():
+    from exgen.figures.svg import Drawing
+
+    d = Drawing()
+    d.text((0, 0), "B\u2032")
+    assert 'font-family="New Computer Modern Math">\u2032</tspan>' in d.svg()

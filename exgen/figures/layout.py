@@ -10,7 +10,7 @@ import math
 import re
 from dataclasses import dataclass
 
-from .metrics import measure
+from .metrics import FROM_MATH, measure
 
 SUBSCRIPTS = "₀₁₂₃₄₅₆₇₈₉"
 SUPERSCRIPTS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻"
@@ -26,6 +26,7 @@ class Run:
 
     text: str
     shift: int = 0
+    math: bool = False  # set in the math companion face (signs the text face lacks, such as primes)
 
     @property
     def scale(self) -> float:
@@ -43,11 +44,11 @@ def runs(content: str) -> list[Run]:
     out: list[Run] = []
     for char in content:
         shift = 1 if char in SUBSCRIPTS else -1 if char in SUPERSCRIPTS else 0
-        plain = char.translate(_PLAIN)
-        if out and out[-1].shift == shift:
-            out[-1] = Run(out[-1].text + plain, shift)
+        plain, math = char.translate(_PLAIN), char in FROM_MATH
+        if out and out[-1].shift == shift and out[-1].math == math:
+            out[-1] = Run(out[-1].text + plain, shift, math)
         else:
-            out.append(Run(plain, shift))
+            out.append(Run(plain, shift, math))
     return out
 
 

@@ -14,6 +14,9 @@ from functools import lru_cache
 from importlib import resources
 
 FAMILY = "New Computer Modern"
+#: Signs the text face lacks, set from its math companion (same design, embedded by Typst too).
+MATH_FAMILY = "New Computer Modern Math"
+FROM_MATH = "′″"
 #: What an SVG asks for: the family Typst embeds, then look-alikes a browser may have, then any serif.
 SVG_FAMILY = "'New Computer Modern', 'Latin Modern Roman', 'CMU Serif', serif"
 STYLES = ("regular", "bold", "italic", "bold-italic")
@@ -64,7 +67,8 @@ def covered(text: str) -> bool:
 # ---- building the table (maintenance: needs the typst package, which exgen depends on anyway) ----
 
 _MEASURE = """#let m(c, style, weight) = {{
-  let t(top, bottom) = measure(text(font: "{family}", size: 1000pt, style: style, weight: weight,
+  let family = if c in "{from_math}" {{ "{math_family}" }} else {{ "{family}" }}
+  let t(top, bottom) = measure(text(font: family, size: 1000pt, style: style, weight: weight,
     top-edge: top, bottom-edge: bottom, fallback: false, c))
   (calc.round(t("baseline", "baseline").width.pt() / 1000, digits: 4),
    calc.round(calc.max(0, t("bounds", "baseline").height.pt()) / 1000, digits: 4),
@@ -85,7 +89,7 @@ def build_table() -> dict:
 
     chars = "(" + ", ".join(json.dumps(c, ensure_ascii=False) for c in CHARACTERS) + ",)"
     rows = "\n".join(f'  "{name}": chars.map(c => m(c, "{s}", "{w}")),' for name, (s, w) in _STYLE_ARGS.items())
-    source = _MEASURE.format(family=FAMILY, chars=chars, rows=rows)
+    source = _MEASURE.format(family=FAMILY, math_family=MATH_FAMILY, from_math=FROM_MATH, chars=chars, rows=rows)
     styles = typst.query(source.encode("utf-8"), "<metrics>", field="value", one=True, ignore_system_fonts=True)
     if isinstance(styles, str):
         styles = json.loads(styles)

@@ -17,7 +17,7 @@ from xml.sax.saxutils import escape
 
 from .layout import (TextBox, boxes_overlap, circle_hits, path_points, ring_crosses, runs, segment_hits, segments_cross,
                      text_box, text_width)
-from .metrics import SVG_FAMILY
+from .metrics import MATH_FAMILY, SVG_FAMILY
 
 FONT_SIZE = 14.0  # every label
 NOTE_SIZE = 13.0  # italic remarks ("positions from the left end")
@@ -235,11 +235,9 @@ def _tspans(content: str, size: float) -> str:
     for run in runs(content):
         dy = run.dy * size - offset
         offset += dy
+        attributes = f' dy="{num(dy)}"' if dy or run.shift else ""
+        attributes += f' font-size="{num(size * run.scale)}"' if run.shift else ""
+        attributes += f' font-family="{MATH_FAMILY}"' if run.math else ""
         text = escape(run.text)
-        if run.shift:
-            out.append(f'<tspan dy="{num(dy)}" font-size="{num(size * run.scale)}">{text}</tspan>')
-        elif dy:
-            out.append(f'<tspan dy="{num(dy)}">{text}</tspan>')
-        else:
-            out.append(text)
+        out.append(f"<tspan{attributes}>{text}</tspan>" if attributes else text)
     return "".join(out)

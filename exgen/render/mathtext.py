@@ -46,9 +46,15 @@ def escape_typst(prose: str) -> str:
     text = "".join("\\" + ch if ch in _TYPST_ALWAYS else ch for ch in prose)
     text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
     text = _DOTTED_UNIT.sub(_tight_unit, text)
+    # Typst turns ' after a digit into a prime, a glyph the body face lacks: "gear 1's" keeps an apostrophe,
+    # and a prime ("l₃'") is written as one, which the layouts set from the math face
+    text = _APOSTROPHE_AFTER_DIGIT.sub("\u2019", text)
+    text = _PRIME_AFTER_DIGIT.sub("\u2032", text)
     return _TYPST_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
 
 
+_APOSTROPHE_AFTER_DIGIT = re.compile(r"(?<=\d)'(?=[A-Za-z])")
+_PRIME_AFTER_DIGIT = re.compile("(?<=[0-9\u2080-\u2089])'")
 #: A word with a middle dot in it, a unit such as N·m or kg·m²: the body font's dot stands spaced
 #: ("N · m") where the key's math sets it tight, so the prose closes it up, in a box that never breaks.
 _DOTTED_UNIT = re.compile("\\S+\u00b7\\S+")  # not a spaced separator, " · "
