@@ -11,6 +11,7 @@ from . import units
 from .domains import PERCENT_UNITS, domain_of, drawn_values
 from .draw import derived_value, failed_requirement, si_values
 from .errors import ExgenError, QuantityError
+from .render.unicode_math import text_to_plain
 from .template import Template
 from .variant import Variant, build_variant
 
@@ -43,7 +44,8 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
     if unknown:
         problems.append(f"{template.id} has no parameter(s) {', '.join(unknown)}")
     if missing:
-        listed = ", ".join(f"{p.name} ({p.label or 'value'}{', ' + p.unit if p.unit else ''})" for p in missing)
+        listed = ", ".join(f"{p.name} ({text_to_plain(p.label) or 'value'}{', ' + p.unit if p.unit else ''})"
+                           for p in missing)
         problems.append(f"give a value for {listed}")
     if problems:
         raise ExgenError("; ".join(problems))
@@ -72,7 +74,7 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
 
 
 def _describe(spec) -> str:
-    return f"{spec.name} ({spec.label})" if spec.label else spec.name
+    return f"{spec.name} ({text_to_plain(spec.label)})" if spec.label else spec.name
 
 
 def _derived(spec, values: dict, text: str | None) -> Decimal:

@@ -43,3 +43,20 @@ def test_feedback_and_reports_quote_messages_as_a_reader_sees_them():
     assert "&amp;" not in shown and "& more" in shown
     assert _escape(r"the train value $e = (\omega_R - \omega_A)/(\omega_S - \omega_A)$") == \
         "the train value e = (ω_R − ω_A)/(ω_S − ω_A)"
+
+
+def test_prose_writes_its_symbols_as_math(bank):
+    """Titles, sources, statements, asks, labels and worked-solution notes write a symbol as $T_c$, which
+    every output can set, never as raw T_c or \\omega (feedback messages, say:, are plain text)."""
+    from exgen.render.unicode_math import split_math
+    from exgen.variant import make_variant
+
+    raw = re.compile(r"\\[A-Za-z]|[_^{}]")
+    found = []
+    for template in bank:
+        variant = make_variant(template, 3)
+        texts = [template.title, template.source, variant.statement, *variant.asks.values(),
+                 *(p.label for p in variant.params), *(s.note for s in variant.steps)]
+        found += [(template.id, text) for text in texts
+                  if any(not math and raw.search(chunk) for math, chunk in split_math(text or ""))]
+    assert not found, found[:5]

@@ -91,7 +91,7 @@ def coupler_point(p, d):
     """
     circuit = circuit_of(p)
     xb = d.step("xB", p.xA + p.L2 * math.cos(p.theta2), "m", symbol="x_B", formula=r"@xA + @L2\cos @theta2",
-                note="R_H = R_1 + R_2, from D to the crank pin B")
+                note="$R_H = R_1 + R_2$, from D to the crank pin B")
     yb = d.step("yB", p.yA + p.L2 * math.sin(p.theta2), "m", symbol="y_B", formula=r"@yA + @L2\sin @theta2")
     theta_h = direction(d, "theta_H", r"\theta_H", "@yB", "@xB", yb, xb, "the direction D → B")
     r_h = d.step("r_H", math.hypot(xb, yb), "m", symbol="r_H", formula=r"\sqrt{@xB^2 + @yB^2}")
@@ -106,7 +106,7 @@ def coupler_point(p, d):
     xc = d.step("xC", p.L4 * math.cos(theta4), "m", symbol="x_C", formula=r"@L4\cos @theta4")
     yc = d.step("yC", p.L4 * math.sin(theta4), "m", symbol="y_C", formula=r"@L4\sin @theta4")
     theta3 = direction(d, "theta3", r"\theta_3", "@yC - @yB", "@xC - @xB", yc - yb, xc - xb,
-                       "the coupler B → C from the loop R_4 = R_H + R_3 (the text's loop takes R_3 from C to B, "
+                       "the coupler B → C from the loop $R_4 = R_H + R_3$ (the text's loop takes $R_3$ from C to B, "
                        "180° round)")
     alpha = d.step("alpha", lk.cosine_law_angle(p.CP, p.L3, p.BP), "rad", symbol=r"\alpha",
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",
@@ -117,7 +117,7 @@ def coupler_point(p, d):
                     note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
                          + ("counter-clockwise (P on the right of B → C)" if right else "clockwise (P on the left of B → C)"))
     xp = d.step("xP", xc + p.CP * math.cos(theta6), "m", symbol="x_P", formula=r"@xC + @CP\cos @theta6",
-                note="R_P = R_4 + R_6")
+                note="$R_P = R_4 + R_6$")
     yp = d.step("yP", yc + p.CP * math.sin(theta6), "m", symbol="y_P", formula=r"@yC + @CP\sin @theta6")
     gamma = lk.cosine_law_angle(p.L3, p.L4, r_h)
     require_well_conditioned(d, gamma, 2 * phi)
