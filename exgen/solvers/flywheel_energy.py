@@ -112,8 +112,7 @@ def starting_torque(p, d):
     """Problem 3.3: a constant starting torque accelerates a flywheel from rest."""
     inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2")
     alpha = d.step("alpha", p.tau / inertia, "rad/s^2", symbol=r"\alpha", formula=r"\frac{@tau}{@I}")
-    if abs(p.k - 1.0) > 0.03:  # at k = 1 m, k and k² agree
-        d.mistake("alpha", "k_not_squared", p.tau / (p.m * p.k))
+    d.mistake("alpha", "k_not_squared", p.tau / (p.m * p.k), if_apart=True)  # k = 1 m: k and k² agree
     w = d.step("omega", alpha * p.t, "rad/s", symbol=r"\omega", formula=r"@alpha\,@t", note="from rest")
     d.step("KE", fw.kinetic_energy(inertia, w), "J", symbol=r"E_k", formula=r"\tfrac{1}{2}\,@I\,@omega^2",
            note="equal to the work of the torque, τ θ with θ = ½ α t²")
@@ -139,5 +138,4 @@ def energy_coefficient(p, d):
     d.step("m", fw.rim_mass(inertia, p.k), "kg", formula=r"\frac{@I}{@k^2}")
     d.mistake("m", "plus_minus_read_as_total", delta_e / (w ** 2 * p.band) / p.k ** 2)
     d.mistake("m", "rpm_as_rad_s", delta_e / ((w / RPM) ** 2 * cs) / p.k ** 2)
-    if abs(p.k - 1.0) > 0.03:  # at k = 1 m, k and k² agree
-        d.mistake("m", "k_not_squared", inertia / p.k)
+    d.mistake("m", "k_not_squared", inertia / p.k, if_apart=True)  # k = 1 m: k and k² agree

@@ -11,7 +11,6 @@ from __future__ import annotations
 import math
 
 from ..mechanics import governors as gv
-from .governors import record_apart
 
 G = gv.G
 RPM = 2 * math.pi / 60
@@ -33,10 +32,10 @@ def hartnell_two_springs(p, d):
     d.require(sleeve > 0, "no pull is left for the second spring")
     tension = d.step("P_2", sleeve * p.L1 / p.L2, "N", formula=r"@P_2s\,\frac{@L1}{@L2}",
                      note="moments about the lever's fulcrum")
-    record_apart(d, "P_2", "friction_wrong_side", (sleeve + 2 * p.f) * p.L1 / p.L2)
+    d.mistake("P_2", "friction_wrong_side", (sleeve + 2 * p.f) * p.L1 / p.L2, if_apart=True)
     d.mistake("P_2", "lever_inverted", sleeve * p.L2 / p.L1)
-    record_apart(d, "P_2", "arms_inverted",
-                  (gv.hartnell_sleeve_force(force, p.b, p.a) - p.Ms * G - p1 - p.f) * p.L1 / p.L2)
+    d.mistake("P_2", "arms_inverted",
+                  (gv.hartnell_sleeve_force(force, p.b, p.a) - p.Ms * G - p1 - p.f) * p.L1 / p.L2, if_apart=True)
     d.mistake("P_2", "rpm_as_rad_s",
               (gv.hartnell_sleeve_force(p.m * (p.N / RPM) ** 2 * p.r1, p.a, p.b) - p.Ms * G - p1 - p.f) * p.L1 / p.L2)
     x2 = d.step("x_2", x1 * p.L2 / p.L1, "m", formula=r"@x_1\,\frac{@L2}{@L1}", note="the lever moves spring 2 less")
@@ -55,8 +54,8 @@ def hartnell_spring(p, d):
         spring = d.step(f"S_{tag}", gv.hartnell_sleeve_force(force, p.a, p.b) - p.M * G - p.f, "N", symbol=rf"S_{tag}",
                         formula=rf"\frac{{2\,@F_{tag}\,@a}}{{@b}} - @M\,@g - @f",
                         note=r"moments about the fulcrum: $F a = \tfrac{1}{2}(M g + S + f)\,b$; the sleeve is rising" if tag == "1" else "")
-        record_apart(d, f"S_{tag}", "friction_wrong_side", spring + 2 * p.f)
-        record_apart(d, f"S_{tag}", "arms_inverted", gv.hartnell_sleeve_force(force, p.b, p.a) - p.M * G - p.f)
+        d.mistake(f"S_{tag}", "friction_wrong_side", spring + 2 * p.f, if_apart=True)
+        d.mistake(f"S_{tag}", "arms_inverted", gv.hartnell_sleeve_force(force, p.b, p.a) - p.M * G - p.f, if_apart=True)
         d.mistake(f"S_{tag}", "sleeve_weight_forgotten", spring + p.M * G)
         d.mistake(f"S_{tag}", "one_ball", force * p.a / p.b - p.M * G - p.f)
         d.mistake(f"S_{tag}", "rpm_as_rad_s", 2 * p.m * (w / RPM) ** 2 * r * p.a / p.b - p.M * G - p.f)
@@ -64,8 +63,8 @@ def hartnell_spring(p, d):
     lift = d.step("lift", gv.sleeve_lift(p.r1, p.r2, p.a, p.b), "m", symbol=r"x",
                   formula=r"(@r2 - @r1)\,\frac{@b}{@a}", note="the sleeve's rise, which compresses the spring")
     d.step("s", (forces[1] - forces[0]) / lift, "N/m", symbol=r"s", formula=r"\frac{@S_2 - @S_1}{@lift}")
-    record_apart(d, "s", "lift_not_scaled", (forces[1] - forces[0]) / (p.r2 - p.r1))
-    record_apart(d, "s", "arms_inverted", (forces[1] - forces[0]) / ((p.r2 - p.r1) * p.a / p.b))
+    d.mistake("s", "lift_not_scaled", (forces[1] - forces[0]) / (p.r2 - p.r1), if_apart=True)
+    d.mistake("s", "arms_inverted", (forces[1] - forces[0]) / ((p.r2 - p.r1) * p.a / p.b), if_apart=True)
 
 
 def spring_controlled(p, d):

@@ -20,11 +20,6 @@ G = gv.G
 RPM = 2 * math.pi / 60
 
 
-def record_apart(d, step: str, name: str, wrong: float) -> None:
-    """Record a mistake, named only where it lands clear of the right value (by the part's tolerance)."""
-    d.mistake(step, name, wrong, if_apart=True)
-
-
 def watt_height(p, d):
     """Problem 4.1: the height of a Watt governor at a speed, how far it falls when the speed rises,
     and the angle of its arms."""
@@ -99,8 +94,8 @@ def porter_speed_range(p, d):
     d.step("range", w2 - w1, "rad/s", symbol=r"\omega_2 - \omega_1", formula=r"@omega_2 - @omega_1")
     for tag, r in (("1", p.r1), ("2", p.r2)):
         same = gv.Linkage(p.l, p.l, p.e_u, p.e_u)
-        record_apart(d, f"omega_{tag}", "offset_ignored",
-                     gv.equilibrium_speed(p.m, load, gv.lever_arms(same, gv.pose(same, r))))
+        d.mistake(f"omega_{tag}", "offset_ignored",
+                  gv.equilibrium_speed(p.m, load, gv.lever_arms(same, gv.pose(same, r))), if_apart=True)
         arms = gv.lever_arms(linkage, gv.pose(linkage, r))
         d.mistake(f"omega_{tag}", "sleeve_moment_arm",
                   math.sqrt((p.m * G * arms.IZ + load / 2 * arms.IZ) / arms.XZ / (p.m * r)))
@@ -159,8 +154,8 @@ def porter_sleeve_friction(p, d):
                   note="falling: friction relieves it")
     d.mistake("omega_up", "friction_wrong_side", down)
     d.mistake("omega_down", "friction_wrong_side", up)
-    record_apart(d, "omega_up", "friction_ignored", gv.equilibrium_speed(p.m, p.M * G, arms1))
-    record_apart(d, "omega_down", "friction_ignored", gv.equilibrium_speed(p.m, p.M * G, arms1))
+    d.mistake("omega_up", "friction_ignored", gv.equilibrium_speed(p.m, p.M * G, arms1), if_apart=True)
+    d.mistake("omega_down", "friction_ignored", gv.equilibrium_speed(p.m, p.M * G, arms1), if_apart=True)
 
 
 def porter_dead_load(p, d):
@@ -193,8 +188,8 @@ def porter_dead_load(p, d):
         wrong_h = h + sign * p.x
         if 0 < wrong_h < p.l:
             wrong_iz = math.sqrt(p.l ** 2 - wrong_h ** 2)
-            record_apart(d, f"omega_{tag}", "full_sleeve_travel",
-                         math.sqrt((p.m + load) * G * wrong_iz / (p.m * (wrong_iz + p.e) * wrong_h)))
+            d.mistake(f"omega_{tag}", "full_sleeve_travel",
+                      math.sqrt((p.m + load) * G * wrong_iz / (p.m * (wrong_iz + p.e) * wrong_h)), if_apart=True)
         speeds.append(w)
     sensitivity = d.step("S", gv.sensitivity(p.N, *speeds), "", symbol=r"S",
                          formula=r"\frac{@N}{@omega_1 - @omega_2}", note="eq 4.5, with ω the mean speed")
