@@ -28,7 +28,7 @@ TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params
                  "solver", "statement", "parts", "figure", "key_figures", "report"}
 PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain"}
 REPORT_KEYS = {"what", "value", "unit", "range"}
-PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses"}  # and the type's own
+PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "hints"}  # and the type's own
 MAX_VALUES = 100_000
 
 
@@ -404,9 +404,21 @@ class _Reader:
                 id=part_id, ask=str(spec.get("ask", "")), answer=str(spec.get("answer", "")),
                 unit=str(spec.get("unit", "")), type=kind, tol=tol, points=float(points),
                 mistakes=self.mistakes(spec.get("mistakes"), where), uses=uses, options=options,
+                hints=self.hints(spec.get("hints"), names, where),
             ))
             seen.append(part_id)
         return tuple(out)
+
+    def hints(self, data, names: set, where) -> tuple[str, ...]:
+        """`hints:` a list of texts, first to last (they may name parameters, as an ask does)."""
+        if data is None:
+            return ()
+        if not isinstance(data, list) or not all(isinstance(h, str) and h.strip() for h in data):
+            self.error(where + ("hints",), "must be a list of hint texts, first to last")
+            return ()
+        for j, hint in enumerate(data):
+            self.check_text(hint, names, where + ("hints", j))
+        return tuple(h.strip() for h in data)
 
     def mistakes(self, data, where) -> tuple[MistakeSpec, ...]:
         if data is None:

@@ -12,7 +12,7 @@ from pathlib import Path
 from . import __version__
 from .errors import ExgenError
 
-SEED_MAX = 2**64 - 1  # seeds are 64-bit (exgen.seeds.derive_seed)
+SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.seeds.PRACTICE_SEEDS)
 
 
 def _progress(items, total, label="working"):
@@ -228,7 +228,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("show", help="draw one variant of a template and print it")
     p.add_argument("id")
-    p.add_argument("--seed", type=_count(0, SEED_MAX), help="the variant's seed, 0 to 2^64-1 (default: a fresh one)")
+    p.add_argument("--seed", type=_count(0, SEED_MAX), help="the variant's seed, 0 to 2^65-1 (default: a fresh one)")
     p.add_argument("--key", action="store_true", help="also print the answers and worked solution")
     p.set_defaults(func=cmd_show)
 

@@ -30,6 +30,16 @@ _CHECK_SALT = b"exgen: sheet codes and secret fingerprints"
 MAKE_ONE = "python3 -c 'import secrets; print(secrets.token_hex(32))'"
 
 
+#: Seeds of sheets are HMAC outputs below 2^64 (`derive_seed`); practice draws its seeds from the next
+#: 2^64 numbers, so a practice problem is never an issued one, whatever the secret (which practice never has).
+PRACTICE_SEEDS = range(2**64, 2**65)
+
+
+def practice_seed() -> int:
+    """A fresh seed from the practice range, disjoint from every seed a sheet can have."""
+    return PRACTICE_SEEDS.start + secrets.randbits(64)
+
+
 def derive_seed(secret: bytes, assignment: str, student: str, slot: str) -> int:
     """A 64-bit seed for one problem slot of one student's sheet."""
     message = f"{assignment}/{student}/{slot}".encode("utf-8")

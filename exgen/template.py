@@ -84,6 +84,7 @@ class PartSpec:
     mistakes: tuple[MistakeSpec, ...] = ()
     uses: tuple[str, ...] = ()
     options: Mapping[str, Any] = field(default_factory=dict)
+    hints: tuple[str, ...] = ()  # a ladder of hints for practice, first to last (text with $LaTeX$)
 
     def __post_init__(self):
         object.__setattr__(self, "options", dict(self.options))  # a copy: nobody else's dict to change

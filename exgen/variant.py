@@ -82,6 +82,10 @@ class Variant:
     def step(self, name: str) -> Step:
         return next(s for s in self.steps if s.name == name)
 
+    def fill(self, text: str) -> str:
+        """A text of the template (a hint, say) with this variant's given values, as its statement has them."""
+        return render_text(text, {p.name: p for p in self.params})
+
 
 @lru_cache(maxsize=256)
 def resolve(reference: str, package: str):

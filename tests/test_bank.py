@@ -59,11 +59,26 @@ def test_good_template_loads(tmp_path):
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, uses: [b]}", "t.yaml:15: parts.0.uses: 'b' is not an earlier part"),
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, tol: {rel: -1}}", "t.yaml:15: parts.0.tol.rel: must be a number >= 0"),
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, points: 0}", "t.yaml:15: parts.0.points: must be a positive number"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: first}", "t.yaml:15: parts.0.hints: must be a list of hint"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: [ok, 3]}", "t.yaml:15: parts.0.hints: must be a list of hint"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: ['{{ d9 }}']}",
+     "t.yaml:15: parts.0.hints.0: refers to unknown parameter(s): d9"),
 ])
 def test_each_problem_names_file_key_and_line(tmp_path, old, new, expected):
     assert old in GOOD
     found = problems(write(tmp_path, GOOD.replace(old, new)))
     assert any(expected in p for p in found), found
+
+
+def test_hints_are_kept_in_order_and_filled_with_the_variants_values(tmp_path):
+    from exgen.variant import make_variant
+
+    text = GOOD.replace("answer: N2_slip, unit: rpm}",
+                        "answer: N2_slip, unit: rpm, hints: ['The ratio is $d_1/d_2$.', 'Start from {{ N1 }}.']}")
+    template = load_template(write(tmp_path, text))
+    assert template.parts[0].hints == ("The ratio is $d_1/d_2$.", "Start from {{ N1 }}.")
+    variant = make_variant(template, 3)
+    assert variant.fill(template.parts[0].hints[1]) == f"Start from {variant.param('N1')}."
 
 
 def test_all_problems_in_a_file_are_reported_at_once(tmp_path):

@@ -56,7 +56,7 @@ def test_user_errors_are_one_line_without_traceback(capsys, argv, message):
 
 @pytest.mark.parametrize("argv, message", [
     (["show", "belts.flat_belt_power", "--seed", "-5"], "--seed: -5 is out of range"),
-    (["show", "belts.flat_belt_power", "--seed", str(2**64)], "out of range"),
+    (["show", "belts.flat_belt_power", "--seed", str(2**65)], "out of range"),
     (["show", "belts.flat_belt_power", "--seed", "seven"], "'seven' is not a whole number"),
     (["validate", "belts.drive_geometry", "--seeds", "0"], "--seeds: 0 is out of range"),
     (["generate", str(EXAMPLES / "tutorial1.yaml"), "--out", "x", "--jobs", "0"], "--jobs: 0 is out of range"),
