@@ -94,10 +94,19 @@ def load_template(path: Path) -> Template:
         line = getattr(getattr(exc, "problem_mark", None), "line", None)
         raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
     reader = _Reader(path, root)
-    template = reader.template(data, data_digest(data))
+    template = reader.template(data, data_digest(_issued(data)))
     if reader.errors:
         raise BankError(reader.errors)
     return template
+
+
+def _issued(data):
+    """What sheets, keys and grades depend on, for the template's version: all of it but the parts'
+    practice hints, which no sheet shows and no mark depends on (adding one re-issues nothing)."""
+    if not isinstance(data, dict) or not isinstance(data.get("parts"), list):
+        return data
+    parts = [{k: v for k, v in p.items() if k != "hints"} if isinstance(p, dict) else p for p in data["parts"]]
+    return {**data, "parts": parts}
 
 
 #: libyaml's safe loader when PyYAML was built with it (10x faster), else the pure-Python one.

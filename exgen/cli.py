@@ -214,6 +214,45 @@ def cmd_validate(args) -> int:
     return 1 if failed else 0
 
 
+def _practice(args):
+    """The practice core over the progress file, limited to an assignment's templates if one is given."""
+    from .assignment import load_assignment
+    from practice.session import Practice
+    from practice.store import Store
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank) if args.assignment else None
+    return Practice(bank, Store(Path(args.db)), assignment)
+
+
+def cmd_practice(args) -> int:
+    from practice.terminal import Terminal, stats_text
+
+    practice = _practice(args)
+    if args.stats:
+        print(stats_text(practice))
+        return 0
+    scope = practice.catalogue.choose(args.chapter, args.topic)
+    return Terminal(practice, scope, open_figures=args.open).run()
+
+
+def cmd_serve(args) -> int:
+    from practice.web.server import serve
+
+    return serve(_practice(args), host=args.host, port=args.port, open_browser=args.open)
+
+
+def _progress_options(p) -> None:
+    from practice.store import default_path
+
+    p.add_argument("--db", default=str(default_path()), metavar="FILE",
+                   help="the progress file (SQLite; where it is by default: below)")
+    p.epilog = f"Your progress is kept in:\n  {default_path()}\n(--db FILE or $EXGEN_PRACTICE_DB sets another file)"
+    p.formatter_class = argparse.RawDescriptionHelpFormatter
+    p.add_argument("--assignment", metavar="A.yaml",
+                   help="practise only this assignment's templates (with fresh numbers, never a sheet's)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="exgen", description="Unique, gradeable Mechanics of Machines problems: sheets, keys, grading.")
@@ -260,6 +299,28 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--force", action="store_true",
                    help="grade even if the secret or a template differs from what was issued (warned in the report)")
     p.set_defaults(func=cmd_grade)
+
+    p = sub.add_parser("practice", help="practise alone in the terminal: a problem at a time, checked as you go",
+                       description="Practise alone: fresh problems from where you are weakest, each part checked\n"
+                                   "as you answer it. At a prompt type an answer with its unit, or h (hint),\n"
+                                   "s (worked solution), n (next problem), q (quit).")
+    which = p.add_mutually_exclusive_group()
+    which.add_argument("--chapter", type=_count(1), help="only this chapter")
+    which.add_argument("--topic", metavar="ID", help="only this topic (belts, gears, ...) or template id")
+    p.add_argument("--open", action="store_true", help="open each figure in the system's viewer")
+    p.add_argument("--stats", action="store_true", help="print mastery per topic and stop")
+    _progress_options(p)
+    p.set_defaults(func=cmd_practice)
+
+    p = sub.add_parser("serve", help="practise in the browser: a local web app on this computer",
+                       description="Start the practice web app on this computer (nothing is fetched from the\n"
+                                   "internet) and print its address.")
+    p.add_argument("--host", default="127.0.0.1",
+                   help="address to listen on (default %(default)s: only this computer can reach it)")
+    p.add_argument("--port", type=_count(0, 65535), default=8000, help="port (default %(default)s; 0: any free one)")
+    p.add_argument("--open", action="store_true", help="open the app in the web browser")
+    _progress_options(p)
+    p.set_defaults(func=cmd_serve)
 
     p = sub.add_parser("validate", help="draw many variants of every template and check them")
     p.add_argument("ids", nargs="*", help="only these templates")

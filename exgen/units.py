@@ -215,8 +215,8 @@ def format_decimal(value: Decimal) -> str:
     return text
 
 
-_PRETTY = [("**", "^"), ("*", "\u00b7"), ("^2", "\u00b2"), ("^3", "\u00b3"), ("^-1", "\u207b\u00b9"),
-           ("^-2", "\u207b\u00b2")]
+_PRETTY = [("**", "^"), ("*", "\u00b7"), ("^2", "\u00b2"), ("^3", "\u00b3"), ("^4", "\u2074"),
+           ("^-1", "\u207b\u00b9"), ("^-2", "\u207b\u00b2")]
 
 
 def pretty_unit(unit: str) -> str:

@@ -81,6 +81,13 @@ def test_hints_are_kept_in_order_and_filled_with_the_variants_values(tmp_path):
     assert variant.fill(template.parts[0].hints[1]) == f"Start from {variant.param('N1')}."
 
 
+def test_hints_do_not_change_a_templates_version(tmp_path):
+    plain = load_template(write(tmp_path, GOOD, "plain.yaml"))
+    hinted = load_template(write(tmp_path, GOOD.replace("N2_slip, unit: rpm}", "N2_slip, unit: rpm, hints: [Use the ratio.]}"),
+                                 "h.yaml"))
+    assert hinted.parts[0].hints and hinted.digest == plain.digest
+
+
 def test_all_problems_in_a_file_are_reported_at_once(tmp_path):
     text = GOOD.replace("chapter: 1", "chapter: one").replace("{{ d1 }}.", "{{ d3 }}.").replace("title: A good template\n", "")
     assert len(problems(write(tmp_path, text))) == 3

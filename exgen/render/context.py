@@ -94,11 +94,12 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
     return context
 
 
-def key_context(variant, target, key_figures=()) -> dict:
+def key_context(variant, target, key_figures=(), worked=None) -> dict:
     """Template reference, given data and the worked solution (answers only ever reach a key).
     `key_figures` are the (embed, caption) of the figures only the key shows: the polygons and
-    diagrams the text draws from its tables, placed after the last table of the working."""
-    worked = solution(variant)
+    diagrams the text draws from its tables, placed after the last table of the working.
+    `worked` is the variant's solution, if already made."""
+    worked = worked or solution(variant)
     template = variant.template
     given = [{"symbol": target.math(g.symbol), "label": target.text(g.label),
               "printed": target.prose(g.printed), "si": target.prose(g.si_text or "")} for g in worked.given]

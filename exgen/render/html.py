@@ -9,7 +9,7 @@ from __future__ import annotations
 from markupsafe import Markup, escape
 
 from .mathml import latex_to_mathml
-from .mathtext import split_math
+from .unicode_math import split_math, unescape_dollars
 from .targets import Markdown
 
 
@@ -29,7 +29,7 @@ class Html(Markdown):
             if is_math:
                 out.append(latex_to_mathml(chunk))
             else:
-                out.append(str(escape(chunk.replace("\\$", "$"))).replace("\n\n", "</p><p>"))
+                out.append(str(escape(unescape_dollars(chunk))).replace("\n\n", "</p><p>"))
         return Markup("".join(out))
 
     def prose(self, text: str) -> Markup:

@@ -23,14 +23,27 @@ def variant_text(variant, key: bool = False) -> str:
     """Statement and parts (with the unit asked); with `key`, the given data, worked steps and answers."""
     template = variant.template
     out = [f"{template.title}  [{template.id}" + (f", seed {variant.seed}]" if variant.seed is not None else "]"),
-           "", _wrap(PLAIN.text(variant.statement)), ""]
-    for part in template.parts:
-        ask = f"{PLAIN.text(variant.asks[part.id])} [{answer_type(part).hint(part)}]"
-        out.append(_wrap(ask, "    ", f"({part.id}) "))
-    if not key:
-        return "\n".join(out)
-    worked = solution(variant)
-    out += ["", "Given"]
+           "", statement_text(variant), ""]
+    out += [ask_text(variant, part) for part in template.parts]
+    if key:
+        out += [""] + key_lines(variant)
+    return "\n".join(out)
+
+
+def statement_text(variant) -> str:
+    return _wrap(PLAIN.text(variant.statement))
+
+
+def ask_text(variant, part, indent: str = "") -> str:
+    """'(a) the power transmitted [answer in kW]', wrapped."""
+    ask = f"{PLAIN.text(variant.asks[part.id])} [{answer_type(part).hint(part)}]"
+    return _wrap(ask, indent + "    ", f"{indent}({part.id}) ")
+
+
+def key_lines(variant, worked=None) -> list[str]:
+    """The given data, the worked solution (`worked`, if already made) and the answers."""
+    worked = worked or solution(variant)
+    out = ["Given"]
     for g in worked.given:
         si = f" = {g.si_text}" if g.si_text else ""
         label = f"  ({PLAIN.text(g.label)})" if g.label else ""
@@ -40,14 +53,20 @@ def variant_text(variant, key: bool = False) -> str:
         if isinstance(block, TableBlock):
             out += table_text(block)
         else:
-            marker = "  " + " ".join(f"({p})" for p in block.parts) if block.parts else ""
-            out.append("  " + " = ".join(block.chain(PLAIN)) + marker)
-            if block.note:
-                out.append(f"      {PLAIN.text(block.note)}")
+            out += line_text(block)
     out += ["", "Answers"]
-    for part in template.parts:
+    for part in variant.template.parts:
         out.append(f"  ({part.id}) {answer_type(part).key_text(variant.answers[part.id], PLAIN)}")
-    return "\n".join(out)
+    return out
+
+
+def line_text(line, indent: str = "  ") -> list[str]:
+    """A worked line as 'symbol = formula = numbers = value  (a)', and its note under it."""
+    marker = "  " + " ".join(f"({p})" for p in line.parts) if line.parts else ""
+    out = [indent + " = ".join(line.chain(PLAIN)) + marker]
+    if line.note:
+        out.append(f"{indent}    {PLAIN.text(line.note)}")
+    return out
 
 
 def table_text(table: TableBlock) -> list[str]:

@@ -1,0 +1,119 @@
+"""Mastery per topic and per template, followed from the progress file as it grows.
+
+Every table of the file only grows, so the tracker reads the rows it has not seen yet (by id) and
+keeps, per problem, what mastery needs: each part's first readable answer and whether a hint or the
+worked solution came before it. Any process may write meanwhile (a terminal and a browser on the
+same file): what it wrote is read at the next refresh.
+"""
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass, field
+
+from graders.results import CARRIED, CORRECT, WRONG
+
+from .mastery import Mastery, Outcome, PartOutcome, mastery, problem_outcome
+from .store import Store
+
+READABLE = (CORRECT, CARRIED, WRONG)  # a blank or unreadable answer is not evidence
+
+
+@dataclass
+class _Problem:
+    template: str
+    topic: str
+    chapter: int
+    first: dict[str, tuple[bool, float]] = field(default_factory=dict)  # part -> (right, when)
+    hinted: dict[str, float] = field(default_factory=dict)             # part -> first hint's time
+    solution: float | None = None
+    checks: int = 0
+    seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class Row:
+    """One line of the progress table: a topic or a template."""
+
+    name: str
+    chapter: int
+    mastery: Mastery
+    problems: int     # problems served
+    checks: int       # answers checked
+    seconds: float    # time spent answering
+
+
+class Progress:
+    """Follows a store; `points(template_id)` gives a template's part points (None if no longer in the bank)."""
+
+    def __init__(self, store: Store, points):
+        self.store, self.points = store, points
+        self._last: dict[str, int] = {}
+        self._problems: dict[int, _Problem] = {}
+        self._outcomes: dict[int, Outcome | None] = {}   # kept until the problem's rows change
+        self._tables: dict[str, dict[str, Row]] = {}     # kept until any row is added
+        self._lock = threading.Lock()
+
+    def refresh(self) -> None:
+        with self._lock:
+            new = self.store.after(self._last)
+            for table, rows in new.items():
+                if rows:
+                    self._last[table] = rows[-1][0]
+                    self._tables.clear()
+                    for _, row in rows:
+                        self._outcomes.pop(getattr(row, "problem", None) or row.id, None)
+            for problem_id, row in new["problems"]:
+                self._problems[problem_id] = _Problem(row.template, row.topic, row.chapter)
+            for _, check in new["checks"]:
+                record = self._problems.get(check.problem)
+                if record is None:
+                    continue
+                record.checks += 1
+                record.seconds += check.seconds
+                if check.status in READABLE and check.part not in record.first:
+                    record.first[check.part] = (check.status in (CORRECT, CARRIED), check.at)
+            for _, hint in new["hints"]:
+                record = self._problems.get(hint.problem)
+                if record is not None:
+                    record.hinted.setdefault(hint.part, hint.at)
+            for _, shown in new["solutions"]:
+                record = self._problems.get(shown.problem)
+                if record is not None and record.solution is None:
+                    record.solution = shown.at
+
+    def outcome(self, record: _Problem) -> Outcome | None:
+        points = self.points(record.template) or {p: 1.0 for p in record.first}
+        parts = []
+        for part_id, worth in points.items():
+            first = record.first.get(part_id)
+            before_solution = first is not None and (record.solution is None or first[1] <= record.solution)
+            if first is not None and before_solution:
+                hinted = part_id in record.hinted and record.hinted[part_id] <= first[1]
+                parts.append(PartOutcome(worth, answered=True, right=first[0], hinted=hinted))
+            else:
+                parts.append(PartOutcome(worth, solution_first=record.solution is not None))
+        return problem_outcome(parts)
+
+    def table(self, by: str) -> dict[str, Row]:
+        """Rows by topic (`by="topic"`) or by template id (`by="template"`), after a refresh."""
+        self.refresh()
+        with self._lock:
+            if by in self._tables:
+                return self._tables[by]
+            grouped: dict[str, list[int]] = {}
+            for problem_id in sorted(self._problems):
+                record = self._problems[problem_id]
+                grouped.setdefault(record.topic if by == "topic" else record.template, []).append(problem_id)
+            rows = {}
+            for name, ids in grouped.items():
+                outcomes = [o for o in map(self._outcome, ids) if o is not None]
+                records = [self._problems[i] for i in ids]
+                rows[name] = Row(name, records[0].chapter, mastery(outcomes), len(records),
+                                 sum(r.checks for r in records), sum(r.seconds for r in records))
+            self._tables[by] = rows
+            return rows
+
+    def _outcome(self, problem_id: int) -> Outcome | None:
+        if problem_id not in self._outcomes:
+            self._outcomes[problem_id] = self.outcome(self._problems[problem_id])
+        return self._outcomes[problem_id]

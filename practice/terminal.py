@@ -1,0 +1,263 @@
+"""`exgen practice`: problems in the terminal, one part at a time, in plain text.
+
+No colour, no cursor control and nothing read but lines, so it works the same in a bare terminal
+and over a pipe (tests drive it through stdin). At a part's prompt a student types an answer, as in
+an answer file ("168.8 deg", "2 kN"), or one letter: h (a hint), s (the worked solution), n (the next
+problem), q (quit with a summary). End of input quits as q does.
+"""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable, TextIO
+
+from graders.results import CARRIED, CORRECT, UNREADABLE, WRONG
+
+from exgen.answertypes import answer_type
+from exgen.render.targets import PLAIN
+from exgen.render.text import ask_text, key_lines, line_text, statement_text, WIDTH
+from .mastery import Mastery
+from .progress import Row
+from .scope import Scope, topic_of
+from .session import Practice, Problem
+
+RULE = "─" * WIDTH
+HELP = ("Type your answer with its unit (a bare number is read in the unit asked), or: "
+        "h hint · s worked solution · n next problem · q quit")
+AFTER_SOLUTION = "(Parts answered from now on are checked, but count for nothing in your progress.)"
+VERDICTS = {CORRECT: "Right.", CARRIED: "Right, from your earlier answer:", WRONG: "Not right:",
+            UNREADABLE: "Cannot read that:"}
+NEXT, QUIT = "next", "quit"
+
+
+@dataclass
+class Tally:
+    """This sitting's counts, for the summary at the end."""
+
+    problems: int = 0
+    answered: int = 0
+    right_first: int = 0
+    hints: int = 0
+    solutions: int = 0
+    topics: dict[str, Mastery] = field(default_factory=dict)  # mastery when the sitting began
+
+
+class Terminal:
+    def __init__(self, practice: Practice, scope: Scope, *, ask: Callable[[str], str] | None = None,
+                 out: TextIO | None = None, open_figures: bool = False, figures: Path | None = None):
+        self.practice, self.scope = practice, scope
+        self.out = out or sys.stdout
+        self.ask = ask or _ask
+        self.open_figures = open_figures
+        self._figures = figures
+        self.tally = Tally()
+
+    def say(self, text: str = "") -> None:
+        print(text, file=self.out, flush=True)
+
+    def run(self) -> int:
+        self.tally.topics = {k: r.mastery for k, r in self.practice.table("topic").items()}
+        self.say(f"Practising {self.practice.catalogue.label(self.scope)}. {HELP}")
+        with tempfile.TemporaryDirectory(prefix="exgen-practice-") as scratch:
+            self._figures = self._figures or Path(scratch)
+            while self.problem(self.practice.next_problem(self.scope)) != QUIT:
+                pass
+        self.summary()
+        return 0
+
+    # ---- one problem ------------------------------------------------------------------------
+
+    def problem(self, problem: Problem) -> str:
+        self.tally.problems += 1
+        variant = problem.variant
+        row = self.practice.table("topic").get(topic_of(problem.template))
+        standing = f"  ·  {topic_of(problem.template)}: {_standing(row.mastery if row else Mastery())}"
+        self.say(RULE)
+        self.say(f"Problem {problem.id}  ·  {problem.template.title}{standing}")
+        self.say()
+        self.say(statement_text(variant))
+        self.show_figures(problem)
+        self.say()
+        for part in problem.template.parts:
+            self.say(ask_text(variant, part))
+        solved = False
+        for part in problem.template.parts:
+            outcome = self.part(problem, part, solved)
+            if outcome in (NEXT, QUIT):
+                return outcome
+            solved = solved or outcome == "solution"
+        self.say()
+        return self.between(problem, solved)
+
+    def show_figures(self, problem: Problem) -> None:
+        svg = self.practice.figure(problem)
+        if svg:
+            path = self._write(f"problem-{problem.id}.svg", svg)
+            self.say(f"\nFigure: {path}")
+            if self.open_figures:
+                open_file(path)
+
+    def _write(self, name: str, svg: str) -> Path:
+        path = self._figures / name
+        path.write_text(svg, encoding="utf-8")
+        return path
+
+    def part(self, problem: Problem, part, solved: bool) -> str:
+        """Prompt for one part until it is right, skipped (empty line), or the student moves on."""
+        prompt = f"({part.id}) [{answer_type(part).form_hint(part)}] > "
+        if part is not problem.template.parts[0]:  # the first follows the list of parts
+            self.say()
+            self.say(ask_text(problem.variant, part))
+        tried = False
+        while True:
+            try:
+                text = self.ask(prompt).strip()
+            except EOFError:
+                self.say()
+                return QUIT
+            command = text.lower()
+            if command in ("q", "quit"):
+                return QUIT
+            if command in ("n", "next"):
+                return NEXT
+            if command in ("h", "hint"):
+                self.hint(problem, part.id)
+                continue
+            if command in ("s", "solution"):
+                self.solution(problem)
+                solved = True
+                continue
+            if command in ("?", "help"):
+                self.say(HELP)
+                continue
+            if not text:
+                return "solution" if solved else "skipped"
+            result = self.practice.check(problem, part.id, text)
+            self.verdict(result)
+            if result.status in (CORRECT, CARRIED, WRONG) and not tried:
+                tried = True
+                self.tally.answered += 1
+                self.tally.right_first += result.correct
+            if result.correct:
+                return "solution" if solved else "answered"
+            if result.status == WRONG:
+                self.say("  Try again, or press Enter to go on (h for a hint, s for the worked solution).")
+
+    def verdict(self, result) -> None:
+        if result.status == CORRECT:
+            self.say(f"  {VERDICTS[CORRECT]}")
+            return
+        lead = VERDICTS.get(result.status, "")
+        self.say(f"  {lead} {PLAIN.text(result.message)}".rstrip())
+
+    def hint(self, problem: Problem, part_id: str) -> None:
+        given = self.practice.next_hint(problem, part_id)
+        if given is None:
+            count = len(self.practice.hints(problem, part_id))
+            self.say("  No hints for this part: s shows the worked solution." if not count else
+                     f"  That was the last of {count} hint(s): s shows the worked solution.")
+            return
+        self.tally.hints += 1
+        level, hint = given
+        if hint.line is not None:
+            self.say(f"  Hint {level}:")
+            for line in line_text(hint.line, "    "):
+                self.say(line)
+        else:
+            self.say(f"  Hint {level}: {PLAIN.text(hint.text)}")
+
+    def solution(self, problem: Problem) -> None:
+        worked = self.practice.show_solution(problem)
+        self.tally.solutions += 1
+        self.say()
+        for line in key_lines(problem.variant, worked):
+            self.say(line)
+        for name, svg in self.practice.key_figures(problem):
+            path = self._write(f"problem-{problem.id}-{name}.svg", svg)
+            self.say(f"  Figure ({name.replace('_', ' ')}): {path}")
+            if self.open_figures:
+                open_file(path)
+        self.say(AFTER_SOLUTION)
+
+    def between(self, problem: Problem, solved: bool) -> str:
+        """After the last part: the solution on request, then the next problem or quit."""
+        while True:
+            try:
+                text = self.ask("Enter (or n) for the next problem, s for the worked solution, q to quit > ")
+            except EOFError:
+                self.say()
+                return QUIT
+            command = text.strip().lower()
+            if command in ("q", "quit"):
+                return QUIT
+            if command in ("", "n", "next"):
+                return NEXT
+            if command in ("s", "solution") and not solved:
+                self.solution(problem)
+                solved = True
+            elif command in ("s", "solution"):
+                self.say("The worked solution is above.")
+
+    # ---- the summary ------------------------------------------------------------------------
+
+    def summary(self) -> None:
+        t = self.tally
+        self.say(RULE)
+        self.say(f"This sitting: {t.problems} problem(s); {t.right_first} of {t.answered} part(s) right at the "
+                 f"first try; {t.hints} hint(s); {t.solutions} worked solution(s) seen.")
+        rows = self.practice.table("topic")
+        changed = [name for name, row in rows.items() if row.mastery != t.topics.get(name)]
+        for name in changed:
+            before = t.topics.get(name, Mastery())
+            self.say(f"  {name}: {_standing(before)} → {_standing(rows[name].mastery)}")
+        self.say(f"Progress is kept in {self.practice.store.path}; `exgen practice --stats` shows all of it.")
+
+
+def _ask(prompt: str) -> str:
+    """input(), echoing the line when it comes from a pipe, so that a transcript reads as a dialogue."""
+    text = input(prompt)
+    if not sys.stdin.isatty():
+        print(text, flush=True)
+    return text
+
+
+def _standing(estimate: Mastery) -> str:
+    return "not started" if estimate.problems == 0 else f"{estimate.mean:.0%} ({estimate.level})"
+
+
+def stats_text(practice: Practice) -> str:
+    """The per-topic table of `exgen practice --stats`: every chapter and topic, tried or not."""
+    rows = practice.table("topic")
+    lines = [f"{'topic':<16} {'mastery':>8}  {'level':<12} {'problems':>8} {'answers':>8} {'time':>8}"]
+    for chapter in practice.catalogue.chapters():
+        lines.append(f"Chapter {chapter.number}: {chapter.title}"
+                     + ("" if chapter.topics else f"  ({practice.catalogue.absent})"))
+        for topic in chapter.topics:
+            row = rows.get(topic) or Row(topic, chapter.number, Mastery(), 0, 0, 0.0)
+            shown = f"{row.mastery.mean:.0%}" if row.mastery.problems else "-"
+            lines.append(f"  {topic:<14} {shown:>8}  {row.mastery.level:<12} {row.problems:>8} {row.checks:>8} "
+                         f"{_duration(row.seconds):>8}")
+    lines.append(f"\nProgress file: {practice.store.path}")
+    return "\n".join(lines)
+
+
+def _duration(seconds: float) -> str:
+    minutes = round(seconds / 60)
+    return f"{minutes // 60}h{minutes % 60:02d}" if minutes >= 60 else f"{minutes} min"
+
+
+def open_file(path: Path) -> None:
+    """Open a file in the system's viewer, without waiting for it and without its chatter."""
+    try:
+        if sys.platform == "win32":
+            os.startfile(path)  # type: ignore[attr-defined]
+            return
+        opener = "open" if sys.platform == "darwin" else "xdg-open"
+        subprocess.Popen([opener, str(path)], stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                         stderr=subprocess.DEVNULL, start_new_session=True)
+    except OSError as exc:
+        print(f"(could not open {path}: {exc.strerror or exc})", file=sys.stderr)

@@ -1,0 +1,1 @@
+"""The practice web app: `exgen serve`."""

@@ -1,0 +1,203 @@
+"""The practice web app over HTTP: pages, checks without a reload, and hostile requests (oversized or
+malformed bodies, other sites, other host names, paths outside the assets, a script in an answer)."""
+import random
+import socket
+import sqlite3
+
+import pytest
+from starlette.testclient import TestClient
+
+from practice.scope import Scope
+from practice.session import Practice
+from practice.store import Store
+from practice.web.app import MAX_BODY, create_app, loopback_hosts
+from practice_server import running_server
+
+JSON = {"accept": "application/json"}
+SCRIPT = "<script>alert('x')</script>"
+BREAKOUT = '"><img src=x onerror=alert(1)>'
+
+
+@pytest.fixture
+def practice(bank, tmp_path):
+    return Practice(bank, Store(tmp_path / "progress.sqlite3"), rng=random.Random(4))
+
+
+@pytest.fixture
+def client(practice):
+    app = create_app(practice, loopback_hosts(8000))
+    with TestClient(app, base_url="http://127.0.0.1:8000", raise_server_exceptions=False) as client:
+        yield client
+
+
+def new_problem(client, scope="template:belts.compound_drive") -> int:
+    response = client.post("/next", data={"scope": scope}, follow_redirects=False)
+    assert response.status_code == 303, response.text
+    return int(response.headers["location"].rsplit("/", 1)[1])
+
+
+def test_the_map_shows_all_seven_chapters_and_their_topics(client):
+    page = client.get("/").text
+    for title in ("Power transmission", "Dynamic balancing", "Flywheels", "Governors", "Gyroscopes",
+                  "Free vibration", "Linkage kinematics"):
+        assert title in page
+    assert 'value="topic:belts"' in page and "not started" in page
+
+
+def test_the_problem_page_has_the_statement_figure_and_a_labelled_input_per_part(client, practice):
+    problem_id = new_problem(client)
+    page = client.get(f"/problem/{problem_id}").text
+    problem = practice.problem(problem_id)
+    assert "<svg" in page and "<figcaption>" in page
+    for part in problem.template.parts:
+        assert f'<label for="answer-{part.id}">' in page and f'id="answer-{part.id}"' in page
+    assert problem.variant.param("N1").text in page
+
+
+def test_a_check_answers_with_the_feedback_alone(client, practice):
+    problem_id = new_problem(client)
+    variant = practice.problem(problem_id).variant
+    right = client.post(f"/problem/{problem_id}/check", data={"part": "a", "answer": variant.answers["a"].text},
+                        headers=JSON).json()
+    assert right["correct"] and "Right." in right["html"] and right["standing"].startswith("Belts: ")
+    slip = variant.mistakes["b"]["slip_not_applied"]
+    wrong = client.post(f"/problem/{problem_id}/check", data={"part": "b", "answer": f"{slip:.6g} rpm"},
+                        headers=JSON).json()
+    assert not wrong["correct"] and wrong["status"] == "wrong" and "Not right:" in wrong["html"]
+
+
+def test_without_script_a_check_returns_to_the_page_which_shows_the_answer_and_feedback(client):
+    problem_id = new_problem(client)
+    response = client.post(f"/problem/{problem_id}/check", data={"part": "a", "answer": "12 rpm"},
+                           follow_redirects=False)
+    assert response.status_code == 303 and response.headers["location"] == f"/problem/{problem_id}#part-a"
+    page = client.get(f"/problem/{problem_id}").text
+    assert 'value="12 rpm"' in page and "Not right:" in page
+
+
+def test_hints_then_the_worked_solution_as_mathml(client):
+    problem_id = new_problem(client, "template:belts.flat_belt_power")
+    hint = client.post(f"/problem/{problem_id}/hint", data={"part": "a"}, headers=JSON).json()
+    assert "Hint 1" in hint["html"] and "<math" in hint["html"] and hint["more"]
+    solution = client.post(f"/problem/{problem_id}/solution", data={}, headers=JSON).json()["html"]
+    assert "Worked solution" in solution and solution.count("<math") > 10 and "<mfrac>" in solution
+    assert "\\frac" not in solution.replace('alttext="', "") and "$" not in solution
+    page = client.get(f"/problem/{problem_id}").text
+    assert "Worked solution" in page and "Hint 1" in page
+
+
+@pytest.mark.parametrize("answer", [SCRIPT, BREAKOUT])
+def test_a_students_text_is_escaped_wherever_it_is_shown(client, answer):
+    problem_id = new_problem(client)
+    html = client.post(f"/problem/{problem_id}/check", data={"part": "a", "answer": answer}, headers=JSON).json()["html"]
+    page = client.get(f"/problem/{problem_id}").text
+    for shown in (html, page):
+        assert "<script>alert" not in shown and "<img src=x" not in shown
+    assert 'value="&#34;&gt;&lt;img src=x onerror=alert(1)&gt;"' in page or "&lt;script&gt;" in page
+
+
+def test_a_body_over_the_limit_is_refused_before_it_is_read(client):
+    problem_id = new_problem(client)
+    big = {"part": "a", "answer": "9" * (MAX_BODY + 10)}
+    assert client.post(f"/problem/{problem_id}/check", data=big).status_code == 413
+
+    def chunks():  # no Content-Length: counted as it arrives
+        for _ in range(MAX_BODY // 1000 + 2):
+            yield b"answer=" + b"9" * 1000 + b"&"
+    response = client.post(f"/problem/{problem_id}/check", content=chunks(),
+                           headers={"content-type": "application/x-www-form-urlencoded", **JSON})
+    assert response.status_code == 413 and "larger than" in response.json()["error"]
+
+
+@pytest.mark.parametrize("body, kind, status", [
+    (b'{"part": "a"}', "application/json", 415),
+    (b"part=a&answer=%ff%fe", "application/x-www-form-urlencoded", 400),
+    (b"part=a", "application/x-www-form-urlencoded", 400),
+    (b"&".join(b"f%d=1" % i for i in range(50)), "application/x-www-form-urlencoded", 400),
+    (b"part=zz&answer=1", "application/x-www-form-urlencoded", 400),
+])
+def test_malformed_forms_are_400s_with_a_reason(client, body, kind, status):
+    problem_id = new_problem(client)
+    response = client.post(f"/problem/{problem_id}/check", content=body, headers={"content-type": kind, **JSON})
+    assert response.status_code == status and response.json()["error"]
+
+
+@pytest.mark.parametrize("path", ["/problem/999999", "/problem/abc", "/problem/99999999999999999999999",
+                                  "/nowhere", "/static/../app.py", "/static/%2e%2e%2fapp.py", "/static/app.py",
+                                  "/static/practice.css%00", "/static/"])
+def test_unknown_pages_and_files_outside_the_assets_are_404(client, path):
+    assert client.get(path).status_code == 404
+
+
+def test_assets_are_served_from_the_package_with_etags(client):
+    css = client.get("/static/practice.css")
+    assert css.status_code == 200 and css.headers["content-type"].startswith("text/css")
+    assert client.get("/static/practice.css", headers={"if-none-match": css.headers["etag"]}).status_code == 304
+    font = client.get("/static/NotoSansMath-Regular.woff2")
+    assert font.headers["content-type"] == "font/woff2" and font.content[:4] == b"wOF2"
+
+
+def test_every_page_forbids_outside_scripts_and_styles(client):
+    headers = client.get("/").headers
+    assert "script-src 'self'" in headers["content-security-policy"] and headers["x-content-type-options"] == "nosniff"
+
+
+def test_other_host_names_and_other_sites_are_refused(client):
+    assert client.get("/", headers={"host": "attacker.example"}).status_code == 421
+    other = client.post("/next", data={"scope": "all"}, headers={"origin": "http://attacker.example"})
+    assert other.status_code == 403
+    sneaky = client.post("/next", data={"scope": "all"}, headers={"sec-fetch-site": "cross-site"})
+    assert sneaky.status_code == 403
+
+
+def test_a_scope_that_does_not_exist_is_a_400(client):
+    assert client.post("/next", data={"scope": "topic:nonsense"}).status_code == 400
+    assert client.post("/next", data={"scope": "../../etc"}).status_code == 400
+
+
+def test_a_locked_progress_file_is_a_503_and_loses_nothing(client, practice):
+    problem_id = new_problem(client)
+    practice.store.busy_seconds = 0.2
+    practice.store.close()
+    other = sqlite3.connect(practice.store.path, isolation_level=None)
+    other.execute("BEGIN EXCLUSIVE")
+    try:
+        response = client.post("/next", data={"scope": "all"}, headers=JSON)
+        assert response.status_code == 503 and "busy" in response.json()["error"]
+    finally:
+        other.execute("ROLLBACK")
+        other.close()
+    assert client.get(f"/problem/{problem_id}").status_code == 200
+    assert new_problem(client) > problem_id
+
+
+def test_an_unexpected_failure_is_a_500_page_and_the_server_goes_on(client, practice, monkeypatch):
+    monkeypatch.setattr(practice, "next_problem", lambda scope: 1 / 0)
+    response = client.post("/next", data={"scope": "all"})
+    assert response.status_code == 500 and "your progress so far is kept" in response.text
+    monkeypatch.undo()
+    assert client.get("/").status_code == 200
+
+
+def test_a_real_server_survives_malformed_requests(tmp_path):
+    with running_server(tmp_path / "p.sqlite3") as url:
+        host, port = url.removeprefix("http://").split(":")
+        garbage = [b"GARBAGE\r\n\r\n", b"GET / HTTP/1.1\r\nHost: \xff\xfe\r\n\r\n",
+                   b"POST /next HTTP/1.1\r\nHost: x\r\nContent-Length: -5\r\n\r\n",
+                   b"GET /" + b"a" * 70000 + b" HTTP/1.1\r\n\r\n", b"\x16\x03\x01\x02\x00\x01\x00\x01\xfc\x03\x03"]
+        for request in garbage:
+            with socket.create_connection((host, int(port)), timeout=10) as sock:
+                sock.sendall(request)
+                try:
+                    reply = sock.recv(200)
+                except (ConnectionResetError, socket.timeout):
+                    reply = b""
+                assert reply == b"" or reply.startswith(b"HTTP/1.1 4"), reply
+        with socket.create_connection((host, int(port)), timeout=10) as sock:
+            sock.sendall(f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n".encode())
+            assert sock.recv(100).startswith(b"HTTP/1.1 200")
+
+
+def test_scope_keys_round_trip():
+    for scope in (Scope(), Scope("chapter", "3"), Scope("topic", "belts"), Scope("template", "belts.max_power")):
+        assert Scope.parse(scope.key) == scope
