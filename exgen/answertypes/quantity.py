@@ -17,7 +17,7 @@ _DEGREE_SIGNS = re.compile(r"\s*[\u00b0\u00ba\u02da](?![CF])")
 
 def read_quantity(text: str) -> units.Reading:
     """parse_quantity behind a guard: every failure, whatever raised it, is a QuantityError."""
-    if len(text) > units.MAX_ANSWER_LENGTH:  # before any other work on a hostile megabyte
+    if len(text) > units.MAX_ANSWER_LENGTH:  # before any pattern: `\s*°` is quadratic in a long run of spaces
         raise QuantityError(f"answer longer than {units.MAX_ANSWER_LENGTH} characters")
     shown = text.strip()
     cleaned = _DEGREE_SIGNS.sub(" deg", text)
