@@ -245,7 +245,7 @@ def _yaml_line(exc: yaml.YAMLError, text: str) -> int | None:
 
 # ---- JSON ---------------------------------------------------------------------------------------
 
-_JSON_TOKEN = re.compile(r'"(?:[^"\\\n]|\\.)*"|[\[\]{}]')
+_JSON_TOKEN = re.compile(r'"[^"\\\n]*(?:\\.[^"\\\n]*)*"|[\[\]{}]')  # a string (skipped whole) or a bracket
 
 
 def load_json(path: Path, text: str, deadline: float | None = None) -> Loaded:
