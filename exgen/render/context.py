@@ -9,7 +9,7 @@ import re
 
 from .. import units
 from ..answertypes import answer_type
-from .equations import line_pieces, plan
+from .equations import rows
 from .solution import TableBlock, WorkLine, solution
 from .targets import PLAIN
 
@@ -121,15 +121,7 @@ def key_context(variant, target, key_figures=(), worked=None) -> dict:
 
 def line_context(line: WorkLine, target) -> dict:
     """A worked line: its chain (one line) and its rows (for a layout that breaks long lines)."""
-    latex, written = line_pieces(line, target)
-    rows = []
-    for row in plan(latex):
-        pieces = []
-        for segment in row:
-            text = " ".join(written[segment.piece][segment.lo:segment.hi])
-            pieces.append(("= " if segment.start and segment.piece else "") + text)
-        rows.append(pieces)
-    return {"kind": "line", "equation": target.equation(rows), "note": target.text(line.note),
+    return {"kind": "line", "equation": target.equation(rows(line, target)), "note": target.text(line.note),
             "parts": ", ".join(f"({p})" for p in line.parts)}
 
 

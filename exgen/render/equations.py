@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from .formula import Arg, Cmd, Delim, FormulaError, Group, Paren, Script, Tok, parse
-from .targets import MARKDOWN
+from .targets import PLAIN
 
 #: Width of an equation row beside the part column, in em of the body font.
 WIDTH = 38.0
@@ -36,9 +36,9 @@ class Segment:
     start: bool
 
 
-def plan(pieces: list[list[str]], width: float = WIDTH) -> list[list[Segment]]:
-    """Rows of segments for a line whose pieces (symbol first) are lists of LaTeX terms."""
-    sizes = [[term_width(t) for t in terms] for terms in pieces]
+def plan(sizes: list[list[float]], width: float = WIDTH) -> list[list[Segment]]:
+    """Rows of segments for a line whose pieces (symbol first) are terms of the widths `sizes` (em)."""
+    pieces = sizes
     lead = sum(sizes[0])
     rows: list[list[Segment]] = [[Segment(0, 0, len(pieces[0]), True)]]
     used = lead
@@ -97,7 +97,8 @@ def _width(node, scale: float) -> float:
             return max(_width(a, scale * inner) for a in node.args) + 0.4 * scale
         if node.name == "sqrt":
             return _width(node.args[0], scale) + 1.1 * scale
-        return 0.5 * len(node.args[0]) * scale
+        text = node.args[0]
+        return 0.0 if text.startswith("#") and text.endswith("#") else 0.5 * len(text) * scale  # a number's place
     if isinstance(node, (Delim, Paren)):
         return _width(node.body, scale) + 0.9 * scale
     if isinstance(node, Arg):
@@ -105,8 +106,21 @@ def _width(node, scale: float) -> float:
     return 0.6 * scale
 
 
-def line_pieces(line, target) -> tuple[list[list[str]], list[list[str]]]:
-    """(LaTeX terms for planning, the target's terms) of each piece of a worked line, symbol first."""
-    latex = [[line.symbol]] + [MARKDOWN.terms(p) for p in line.pieces]
-    written = [[target.math(line.symbol)]] + [target.terms(p) for p in line.pieces]
-    return latex, written
+def rows(line, target) -> list[list[str]]:
+    """A worked line as rows of the target's math, each starting '= ...' or continuing a term; one row for
+    a target that wraps lines itself (Markdown, the terminal)."""
+    if not hasattr(target, "sized_terms"):
+        return [[target.math(line.symbol)] + ["= " + " ".join(target.terms(p)) for p in line.pieces]]
+    written, sizes = [[target.math(line.symbol)]], [[term_width(line.symbol)]]
+    for piece in line.pieces:
+        sized = target.sized_terms(piece) if hasattr(piece, "formula") else \
+            [(t, _quantity_width(piece)) for t in target.terms(piece)]
+        written.append([t for t, _ in sized])
+        sizes.append([w for _, w in sized])
+    return [[("= " if seg.start and seg.piece else "") + " ".join(written[seg.piece][seg.lo:seg.hi]) for seg in row]
+            for row in plan(sizes)]
+
+
+def _quantity_width(piece) -> float:
+    """A value, by the length of its plain writing."""
+    return 0.55 * len(PLAIN.quantity(piece.value, piece.unit)) + 0.5

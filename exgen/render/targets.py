@@ -172,9 +172,18 @@ class Typst:
 
     def formula_terms(self, filled) -> list[str]:
         """The formula's Typst, converted once per formula and set of symbols, then numbers filled in."""
-        marked = write(filled.formula, lambda slot: _marker(filled, slot), filled.numbers)
-        numbers = {str(i): self.slot(f) for i, f in enumerate(filled.fills) if not isinstance(f, str)}
-        return [_MARKER.sub(lambda m: numbers[m.group(1)], term) for term in _typst_terms(marked)]
+        return [term for term, _ in self.sized_terms(filled)]
+
+    def sized_terms(self, filled) -> list[tuple[str, float]]:
+        """Each term of the formula in Typst, with its estimated width in em (for breaking long lines)."""
+        marked = _marked(filled.formula.latex, tuple(f if isinstance(f, str) else None for f in filled.fills),
+                         filled.numbers)
+        numbers = {str(i): (self.slot(f), number_width(f)) for i, f in enumerate(filled.fills) if not isinstance(f, str)}
+        out = []
+        for term, width, slots in _typst_terms(marked):
+            out.append((_MARKER.sub(lambda m: numbers[m.group(1)][0], term),
+                        width + sum(numbers[i][1] for i in slots)))
+        return out
 
     def equation(self, rows: list[list[str]]) -> str:
         """The body of a display equation: rows aligned at the first '=', a row that continues a long
@@ -189,16 +198,30 @@ class Typst:
 
 
 _MARKER = re.compile(r'"#(\d+)#"')
-
-
-def _marker(filled, slot) -> str:
-    fill = filled.fills[slot.index]
-    return fill if isinstance(fill, str) else rf"\text{{#{slot.index}#}}"
+_LATEX_MARKER = re.compile(r"\\text\{#(\d+)#\}")
 
 
 @lru_cache(maxsize=8192)
-def _typst_terms(marked: str) -> tuple[str, ...]:
-    return tuple(latex_to_typst(term) for term in terms(marked))
+def _marked(latex: str, symbols: tuple, numbers: bool) -> str:
+    """The formula's LaTeX with each number's place held by a marker, \\text{#3#}: one per template."""
+    from .formula import parse
+
+    return write(parse(latex), lambda slot: symbols[slot.index] or rf"\text{{#{slot.index}#}}", numbers)
+
+
+@lru_cache(maxsize=8192)
+def _typst_terms(marked: str) -> tuple[tuple[str, float, tuple[str, ...]], ...]:
+    """(Typst, width in em without its numbers, the markers it holds) of each term."""
+    from .equations import term_width
+
+    return tuple((latex_to_typst(term), term_width(term), tuple(_LATEX_MARKER.findall(term))) for term in terms(marked))
+
+
+def number_width(number) -> float:
+    """A generous width in em of a number standing in a formula."""
+    mantissa, exponent = number_parts(number.value, number.sig) if number.exact is None else (number.exact, None)
+    width = 0.5 * len(mantissa.lstrip("-")) + (0.9 if mantissa.startswith("-") else 0.0)
+    return width + (2.8 + 0.35 * len(exponent) if exponent else 0.0) + (0.4 if number.degrees else 0.0)
 
 
 class Plain:
