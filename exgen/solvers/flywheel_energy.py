@@ -37,7 +37,7 @@ def punching_press(p, d):
                 formula=r"\sqrt{@N^2 - \frac{2\,@dE}{@I}}", note=r"from $\Delta E = \tfrac{1}{2} I(\omega_1^2 - \omega_2^2)$")
     drop = d.step("drop", w1 - w2, "rad/s", symbol=r"\omega_1 - \omega_2", formula=r"@N - @omega_2")
     d.mistake("drop", "motor_ignored", w1 - fw.speed_after(w1, p.E, p.I))
-    d.mistake("drop", "linearised", given / (p.I * w1))
+    d.mistake("drop", "linearised", given / (p.I * w1), if_apart=True)  # nearly right for a small drop
     d.mistake("drop", "final_speed", w2)
     as_rad_s = w1 / RPM  # the rpm figure taken for rad/s
     d.mistake("drop", "rpm_as_rad_s", as_rad_s - math.sqrt(as_rad_s ** 2 - 2 * given / p.I))
