@@ -77,7 +77,7 @@ class Practice:
         self.progress = Progress(store, self._points)
         self._variants: OrderedDict[tuple[str, int], tuple[Variant, dict]] = OrderedDict()
         self._lock = Lock()
-        self.ahead = None  # an ahead.Ahead, when problems are to be drawn ahead (the web server)
+        self.ahead = None  # an ahead.Ahead, when figures are to be drawn ahead (the web server)
 
     def warm(self) -> None:
         """Do once, before the first student waits, what every template's first problem would do: import
@@ -120,11 +120,8 @@ class Practice:
         served = self.store.variants_served(template.id)
         ready = self.ahead.take(template) if self.ahead is not None else None
         for attempt in range(DRAWS):
-            if attempt == 0 and ready is not None:
-                seed, variant, made = ready
-            else:
-                seed, made = practice_seed(), {}
-                variant = make_variant(template, seed)
+            seed, made = ready if attempt == 0 and ready is not None else (practice_seed(), {})
+            variant = make_variant(template, seed)
             digest = variant_digest(variant)
             if digest in served:
                 continue

@@ -201,3 +201,19 @@ def test_a_real_server_survives_malformed_requests(tmp_path):
 def test_scope_keys_round_trip():
     for scope in (Scope(), Scope("chapter", "3"), Scope("topic", "belts"), Scope("template", "belts.max_power")):
         assert Scope.parse(scope.key) == scope
+
+
+def test_an_assignments_practice_set_keeps_to_its_templates(bank, tmp_path):
+    from pathlib import Path
+
+    from exgen.assignment import load_assignment
+
+    assignment = load_assignment(Path(__file__).resolve().parents[1] / "examples" / "tutorial1.yaml", bank)
+    practice = Practice(bank, Store(tmp_path / "p.sqlite3"), assignment, rng=random.Random(9))
+    with TestClient(create_app(practice, loopback_hosts(8000)), base_url="http://127.0.0.1:8000") as client:
+        page = client.get("/").text
+        assert "Tutorial 1" in page and "Not in Tutorial 1" in page
+        allowed = {q.template for q in assignment.questions}
+        for _ in range(4):
+            assert practice.problem(new_problem(client, "all")).template.id in allowed
+        assert client.post("/next", data={"scope": "topic:gyroscopes"}).status_code == 400
