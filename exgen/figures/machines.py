@@ -130,10 +130,12 @@ def robot_arm(variant) -> str:
         ([(on_circle(joint, reach + 14 + k, -angle - math.radians(14)), anchor)
           for k in (0, 12, 24, 36) for anchor in ("middle", "end", "start")], (lambda a: a.label("\u03b1") if a else "\u03b1")(shown(variant, "alpha_A"))),
         ([((com[0] + n[0] * k, com[1] + n[1] * k + 5), "start") for k in (14, 26, 40)]
-         + [((com[0] - n[0] * k, com[1] - n[1] * k + 5), "end") for k in (14, 26, 40)],
+         + [((com[0] - n[0] * k, com[1] - n[1] * k + 5), "end") for k in (14, 26, 40)]
+         + [((com[0] + u[0] * t - n[0] * k, com[1] + u[1] * t - n[1] * k + 5), "end")
+            for t in (30, 60, -30) for k in (16, 30)],
          f"{mass.label() if mass else 'm'} at {length.label() if length else 'L'} from the joint"),
     ]
-    for candidates, text in labels:
+    for candidates, text in (labels[2], labels[0], labels[1]):  # the longest first, while there is most room
         d.place(candidates, text)
     for c, r_in, r_out, name in ((motor, 0.0, r1, "1"), (middle, r3, r2, "2"), (middle, 0.0, r3, "3"),
                                  (joint, 0.0, r4, "4")):
