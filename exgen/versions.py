@@ -16,7 +16,6 @@ import importlib.util
 import json
 from dataclasses import dataclass
 from functools import lru_cache
-from importlib import metadata
 from pathlib import Path
 
 from .template import Template
@@ -220,6 +219,8 @@ def _data_files() -> dict[str, str]:
 
 @lru_cache(maxsize=1)
 def _library_versions() -> dict[str, str]:
+    from importlib import metadata  # ~10 ms to import: only when a version is computed
+
     versions = {}
     for name in LIBRARIES:
         try:

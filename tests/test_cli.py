@@ -88,6 +88,25 @@ def test_a_system_error_is_one_line_naming_the_path(capsys, tmp_path, monkeypatc
     assert err.startswith("exgen: ") and "a-file" in err and len(err.strip().splitlines()) == 1
 
 
+@pytest.mark.parametrize("where", ["secret folder", "out is a file", "out is not exgen's"])
+def test_expected_failures_of_generate_are_one_line(capsys, tmp_path, monkeypatch, where):
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    (tmp_path / "secrets").mkdir()
+    (tmp_path / "a-file").write_text("x")
+    (tmp_path / "thesis").mkdir()
+    (tmp_path / "thesis" / "chapter1.tex").write_text("x")
+    argv = {"secret folder": ["--out", str(tmp_path / "out"), "--secret-file", str(tmp_path / "secrets")],
+            "out is a file": ["--out", str(tmp_path / "a-file")],
+            "out is not exgen's": ["--out", str(tmp_path / "thesis")]}[where]
+    monkeypatch.setenv("EXGEN_SECRET", "3f9a1c7e52b8d04e6a1f9c3b7d2e8a45") if where != "secret folder" else None
+    assert main(["generate", str(EXAMPLES / "tutorial1.yaml"), "--no-pdf", *argv]) == 1
+    err = capsys.readouterr().err
+    assert err.startswith("exgen: ") and len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    assert {"secret folder": "is a folder, not a secret file", "out is a file": "is not a folder",
+            "out is not exgen's": "has files exgen did not write"}[where] in err
+    assert (tmp_path / "thesis" / "chapter1.tex").read_text() == "x"
+
+
 def test_generate_then_grade(tmp_path, capsys, monkeypatch):
     monkeypatch.delenv("EXGEN_SECRET", raising=False)
     work = tmp_path / "course"
