@@ -1,13 +1,15 @@
 """`exgen serve`: the practice app on this computer, with uvicorn, until Ctrl+C.
 
 The socket is bound and listening before the address is printed or the browser opened, so neither
-can race the server; on loopback (the default) only this computer can reach it and the app answers
-only to its own address.
+can race the server. What the first problems would otherwise wait for (imports, compiled texts, figures
+drawn ahead) is done meanwhile, in a thread and another process. On loopback (the default) only this
+computer can reach the app, and it answers only to its own address.
 """
 from __future__ import annotations
 
 import socket
 import sys
+import threading
 import webbrowser
 
 from exgen.errors import ExgenError
@@ -46,14 +48,19 @@ def url_of(sock: socket.socket) -> str:
     return f"http://{shown}:{port}/"
 
 
+def _warm(practice) -> None:
+    practice.warm()
+    latex_to_mathml(r"\frac{a}{b}")  # the converter's import, before the first worked solution
+
+
 def serve(practice, host: str = "127.0.0.1", port: int = 8000, open_browser: bool = False,
           announce=print) -> int:
     import uvicorn
 
     sock = listen(host, port)
     bound = sock.getsockname()[1]
-    practice.warm()
-    latex_to_mathml(r"\frac{a}{b}")  # the converter's import, before the first page with math
+    # the first problem of each template should not wait for imports and compiled texts: done meanwhile
+    threading.Thread(target=_warm, args=(practice,), name="exgen-warm", daemon=True).start()
     practice.ahead = Ahead()
     practice.ahead.fill(practice.catalogue.templates)
     loopback = host in ("127.0.0.1", "localhost", "::1")
