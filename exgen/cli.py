@@ -199,6 +199,33 @@ def cmd_grade(args) -> int:
     return 0
 
 
+def cmd_export(args) -> int:
+    from .export import writer
+    from .export.pool import build_pool, notices
+
+    bank = _bank(args)
+    files = [s for s in args.sources if s.lower().endswith((".yaml", ".yml"))]
+    if files and (len(files) > 1 or len(args.sources) > 1):
+        raise ExgenError("give one assignment file, or template ids, not both")
+    if files:
+        from .assignment import load_assignment
+
+        assignment = load_assignment(Path(files[0]), bank)
+        specs = [(q.slot, bank.get(q.template), q.points or bank.get(q.template).points) for q in assignment.questions]
+        title, scope, default = assignment.title, assignment.id, assignment.secret_file
+    else:
+        templates = [bank.get(i) for i in args.sources]
+        specs = [(f"q{n}", t, t.points) for n, t in enumerate(templates, start=1)]
+        title, scope, default = args.title or "exgen problems", "pool", None
+    secret, _ = _secret(args, default, create=default is not None)
+    pool = build_pool(args.title or title, scope, specs, secret, args.variants, progress=_progress)
+    for notice in notices(pool):
+        print(f"note: {notice}", file=sys.stderr)
+    path = writer(args.format)(pool, Path(args.out))
+    print(f"{len(pool.questions)} question(s) x {args.variants} variant(s) as {args.format}: {path}")
+    return 0
+
+
 def cmd_validate(args) -> int:
     from .validate import validate_bank
 
@@ -321,6 +348,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--open", action="store_true", help="open the app in the web browser")
     _progress_options(p)
     p.set_defaults(func=cmd_serve)
+
+    p = sub.add_parser("export", help="a pool of variants per question for a learning system (Moodle, QTI 2.1, Canvas)")
+    p.add_argument("format", choices=("moodle", "qti", "canvas"), help="moodle: Moodle XML; qti: IMS QTI 2.1 package "
+                                                                      "(zip); canvas: a QTI 1.2 zip for Canvas")
+    p.add_argument("sources", nargs="+", metavar="SOURCE", help="an assignment file (its questions and points), or "
+                                                                "template ids")
+    p.add_argument("--variants", type=_count(1, 1000), default=20, help="variants per question (default 20)")
+    p.add_argument("--out", required=True, help="the file to write (.xml for moodle, .zip for qti and canvas)")
+    p.add_argument("--title", help="the quiz or category title (default: the assignment's)")
+    p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
+    p.set_defaults(func=cmd_export)
 
     p = sub.add_parser("validate", help="draw many variants of every template and check them")
     p.add_argument("ids", nargs="*", help="only these templates")

@@ -47,6 +47,17 @@ def derive_seed(secret: bytes, assignment: str, student: str, slot: str) -> int:
     return int.from_bytes(digest[:8], "big")
 
 
+#: The student part of a pool variant's seed input: '#' is never in a student id, so a pool variant
+#: can never be some student's sheet.
+POOL = "#pool"
+
+
+def pool_seed(secret: bytes, scope: str, slot: str, index: int) -> int:
+    """The seed of the index-th variant of a question pool exported to a learning system: keyed by the
+    secret like a sheet's, so a student cannot rebuild the pool's answers either."""
+    return derive_seed(secret, scope, POOL, f"{slot}/{index}")
+
+
 @lru_cache(maxsize=4)
 def _check_key(secret: bytes) -> bytes:
     """The key of everything written from the secret (codes, fingerprint): never the seed key itself."""

@@ -9,7 +9,9 @@ import math
 from .. import units
 from ..template import PartSpec, Tolerance
 from .base import Mistake, exact_quantity
+from .lms import NumericGap, wrong_numbers
 from .number import Number
+from .quantity import accepted_units
 
 #: Angles: within half a degree, compared modulo a full turn.
 ANGLE_ABS_TOL_DEG = 0.5
@@ -76,6 +78,21 @@ class Angle(Number):
 
     def detectors(self):
         return (self._unit_confused, self._percent_fraction)
+
+    def lms_gaps(self, part: PartSpec, value, mistakes) -> tuple[NumericGap, ...]:
+        """A direction within its tolerance; a learning system compares numbers, not directions, so the
+        same direction a turn either way is listed as right too."""
+        to_deg = self._to_deg(part)
+        turn = FULL_TURN_DEG / to_deg
+
+        def tolerance(v: float) -> float:
+            return max(part.tol.abs, part.tol.rel * abs(v * to_deg)) / to_deg
+
+        right = float(value)
+        also = (right - turn, right + turn)
+        return (NumericGap("", right, tolerance(right), units.pretty_unit(part.unit), also=also,
+                           units=accepted_units(part.unit), wrong=wrong_numbers(mistakes, tolerance, (right, *also)),
+                           otherwise=f"not within {self.tolerance_text(part)} of the expected direction"),)
 
     @staticmethod
     def _to_deg(part: PartSpec) -> float:

@@ -190,6 +190,18 @@ class AnswerType:
         error carried forward; empty when an answer of this type cannot be carried."""
         return {}
 
+    # ---- learning systems ----------------------------------------------------------------------
+
+    #: Why a part of this type has no form a learning system can grade (exports leave it out, saying so).
+    lms_missing = "no learning-system response can grade it"
+
+    def lms_gaps(self, part: PartSpec, value, mistakes: Mapping[str, tuple[Any, str]]) -> tuple:
+        """The gaps (exgen.answertypes.lms) an export writes for this part: the expected `value` and the
+        named `mistakes` (name -> (value, feedback)) in the asked form. NoLmsForm when there are none."""
+        from .lms import NoLmsForm
+
+        raise NoLmsForm(self.lms_missing)
+
     def sample_part(self) -> PartSpec:
         """A typical part of this type, for tests that cover every registered type."""
         return PartSpec("a", "the answer", "x", type=self.name, tol=self.default_tol)

@@ -11,6 +11,7 @@ from typing import Mapping
 from ..errors import FormatProblem
 from ..template import PartSpec
 from .base import AnswerType, Given, Report, refuse_long
+from .lms import ChoiceGap, Wrong
 
 MAX_CHOICE_LENGTH = 80
 WRONG_CHOICE = "not the right choice"
@@ -85,6 +86,17 @@ class Choice(AnswerType):
         follow from the choice (a direction, a sense) are worked from the student's."""
         meant = next((c for c in part.options.get("choices", ()) if choice(value, c, choice_aliases())), None)
         return {part.answer: meant} if meant is not None else {}
+
+    def lms_gaps(self, part: PartSpec, value, mistakes) -> tuple[ChoiceGap, ...]:
+        """The listed choices; a wrong choice a known mistake leads to carries its feedback (the first
+        mistake's, in the order the grader tries them, when several lead to it)."""
+        choices = tuple(part.options.get("choices", ()))
+        wrong: dict[str, Wrong] = {}
+        for name, (given, message) in mistakes.items():
+            for c in choices:
+                if c != value and c not in wrong and self.matches(given, c, part):
+                    wrong[c] = Wrong(c, message, name)
+        return (ChoiceGap("", choices, str(value), wrong=tuple(wrong.values())),)
 
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "does the power increase or decrease?", "trend", type=self.name,

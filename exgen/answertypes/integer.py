@@ -11,7 +11,8 @@ from .. import units
 from ..errors import FormatProblem
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, asked_unit, refuse_long
-from .quantity import in_unit
+from .lms import NumericGap, wrong_numbers
+from .quantity import accepted_units, in_unit
 
 NOT_EXACT = "not the expected whole number"
 NOT_A_WHOLE_NUMBER = "a whole number is asked"
@@ -66,6 +67,12 @@ class Integer(AnswerType):
 
     def overrides(self, part: PartSpec, value, variant) -> dict[str, float]:
         return {part.answer: units.convert(float(value), part.unit, variant.step(part.answer).unit)}
+
+    def lms_gaps(self, part: PartSpec, value, mistakes) -> tuple[NumericGap, ...]:
+        """Exactly the whole number: a tolerance of 0."""
+        right = float(value)
+        return (NumericGap("", right, 0.0, units.pretty_unit(part.unit), units=accepted_units(part.unit),
+                           wrong=wrong_numbers(mistakes, lambda v: 0.0, (right,)), whole=True, otherwise=NOT_EXACT),)
 
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "the number of belts", "n", type=self.name, tol=self.default_tol)

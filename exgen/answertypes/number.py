@@ -11,7 +11,8 @@ from .. import units
 from ..errors import ExgenError
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report, exact_quantity, finite
-from .quantity import in_unit, unit_name
+from .lms import NumericGap, wrong_numbers
+from .quantity import accepted_units, in_unit, unit_name
 
 #: A number is right within 1 % (textbook working rounds to 3-4 figures) ...
 REL_TOL = 0.01
@@ -201,6 +202,24 @@ class Number(AnswerType):
         if expected and self.matches(given.value, -expected, part):
             return Mistake("wrong_sign", WRONG_SIGN)
         return None
+
+    # ---- learning systems ----------------------------------------------------------------------
+
+    def lms_tolerance(self, part: PartSpec, value: float) -> float:
+        """The absolute tolerance `matches` gives around `value`: a learning system knows no other kind."""
+        tol = part.tol
+        if tol.sig:
+            return max(tol.abs, sig_fig_tolerance(value, tol.sig))
+        return max(tol.abs, tol.rel * abs(value))
+
+    def lms_gaps(self, part: PartSpec, value, mistakes) -> tuple[NumericGap, ...]:
+        def tolerance(v: float) -> float:
+            return self.lms_tolerance(part, v)
+
+        right = float(value)
+        return (NumericGap("", right, tolerance(right), units.pretty_unit(part.unit), units=accepted_units(part.unit),
+                           wrong=wrong_numbers(mistakes, tolerance, (right,)),
+                           otherwise=NOT_WITHIN.format(tol=self.tolerance_text(part))),)
 
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "the power transmitted", "P", "kW", type=self.name, tol=self.default_tol)

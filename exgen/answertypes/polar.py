@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from fractions import Fraction
 from typing import Mapping
 
 from .. import units
@@ -15,6 +16,8 @@ from ..errors import ExgenError, InvalidDraw, QuantityError
 from ..template import PartSpec, Tolerance
 from .angle import ANGLE_ABS_TOL_DEG, angle, direction_slip
 from .base import AnswerType, Given, Mistake, Report, asked_unit, exact_quantity, refuse_long
+from .lms import NumericGap, wrong_numbers
+from .quantity import accepted_units
 from .number import REL_TOL, numeric
 from .quantity import in_unit
 
@@ -168,6 +171,31 @@ class PolarType(AnswerType):
         direction = part.options["angle"]
         return {part.answer: units.convert(value.magnitude, part.unit, variant.step(part.answer).unit),
                 direction: units.convert(value.angle_deg, "deg", variant.step(direction).unit)}
+
+    # ---- learning systems ----------------------------------------------------------------------
+
+    def lms_gaps(self, part: PartSpec, value: Polar, mistakes) -> tuple[NumericGap, NumericGap]:
+        """Two numbers, each for half the part's marks: the size within its relative tolerance and the
+        angle within its tolerance in degrees (a turn either way right too). A learning system cannot
+        read "remove m at θ" as "add m at θ + 180°": the form asks for the mass to add."""
+        def size_tol(v: float) -> float:
+            return part.tol.rel * abs(v)
+
+        def angle_tol(v: float) -> float:
+            return part.tol.abs
+
+        sizes = {n: (m.magnitude, say) for n, (m, say) in mistakes.items() if not numeric(m.magnitude, value.magnitude, part.tol.rel)}
+        angles = {n: (m.angle_deg, say) for n, (m, say) in mistakes.items() if not angle(m.angle_deg, value.angle_deg, 0.0, part.tol.abs)}
+        turns = (value.angle_deg - 360.0, value.angle_deg + 360.0)
+        half = Fraction(1, 2)
+        return (
+            NumericGap("size", value.magnitude, size_tol(value.magnitude), units.pretty_unit(part.unit), "size",
+                       units=accepted_units(part.unit), wrong=wrong_numbers(sizes, size_tol, (value.magnitude,)), share=half,
+                       otherwise=f"the size is not within {100 * part.tol.rel:g} % of the expected one"),
+            NumericGap("angle", value.angle_deg, part.tol.abs, "\u00b0", "angle", also=turns,
+                       units=accepted_units("deg"), wrong=wrong_numbers(angles, angle_tol, (value.angle_deg, *turns)),
+                       share=half, otherwise=f"the angle is not within {exact_quantity(part.tol.abs, 'deg')} of the expected one"),
+        )
 
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "the balancing mass-radius", "mr", "kg*mm", type=self.name, tol=self.default_tol,

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 import re
+from functools import lru_cache
+from importlib import resources
 
 from .. import units
 from ..errors import DimensionError, QuantityError, WrongKind
@@ -71,3 +73,25 @@ def wrong_kind_message(given_unit: str, asked_unit: str) -> str:
     given, asked = kind_of(given_unit), kind_of(asked_unit)
     where = f" (in {unit_name(asked_unit)})" if asked_unit else ""
     return f"'{given_unit}' is {with_article(given)}, but {with_article(asked)} is asked{where}"
+
+
+@lru_cache(maxsize=1)
+def unit_families() -> tuple[tuple[str, ...], ...]:
+    """The families of units a learning system may accept for one another (exgen/data/unit_families.txt)."""
+    text = resources.files("exgen").joinpath("data/unit_families.txt").read_text("utf-8")
+    return tuple(tuple(line.split()) for line in text.splitlines() if line.strip() and not line.startswith("#"))
+
+
+def accepted_units(unit: str) -> tuple[tuple[str, float], ...]:
+    """(name as typed, multiplier) for the asked unit (1) and the others of its family: an answer in
+    `name` is the value in the asked unit times the multiplier. Each unit under its printed name and,
+    where that differs, as typed with a space for the product ("kN·m" and "kN m")."""
+    if not unit:
+        return ()
+    family = next((f for f in unit_families() if unit in f), (unit,))
+    out: dict[str, float] = {}
+    for other in (unit, *(u for u in family if u != unit)):
+        factor = 1.0 if other == unit else units.convert(1.0, unit, other)
+        for name in (units.pretty_unit(other), other.replace("*", " ")):
+            out.setdefault(name, factor)
+    return tuple(out.items())

@@ -168,6 +168,10 @@ class Symbolic(AnswerType):
         """The student's formula takes the expected one's place: later steps evaluate it."""
         return {part.answer: value}
 
+    #: Core Moodle, QTI 2.1 and Canvas compare numbers and strings only (STACK and Formulas are Moodle plugins).
+    lms_missing = ("a formula, graded by its values at points: no core question type of Moodle, QTI 2.1 or Canvas "
+                   "checks equivalent forms")
+
     def sample_part(self) -> PartSpec:
         names = ("K", "M", "m")
         return PartSpec("a", "the natural frequency in terms of K, M and m", "f_expr", type=self.name,
