@@ -16,9 +16,9 @@ SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exge
 
 
 def _progress(items, total, label="working"):
-    from tqdm import tqdm
+    from .progress import progress
 
-    return tqdm(items, total=total, desc=label, unit="item", disable=None, leave=False)
+    return progress(items, total, label)
 
 
 def _bank(args):
@@ -160,12 +160,18 @@ def cmd_generate(args) -> int:
     if roster_path is None:
         raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
     students = load_roster(roster_path)
+    if args.print and args.no_pdf:
+        raise ExgenError("--print joins the sheets' PDFs: leave out --no-pdf")
     secret, source = _secret(args, assignment.secret_file, create=True)
     recorded = source if source.startswith("$") else str(Path(source).resolve())
     issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
-                      jobs=args.jobs or default_jobs(), progress=_progress, secret_source=recorded)
+                      jobs=args.jobs or default_jobs(), progress=_progress, secret_source=recorded,
+                      print_bundle=args.print)
     kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
     print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; keys in {issued.out / 'keys'}")
+    if args.print:
+        print(f"for printing: {issued.out / 'print' / 'sheets.pdf'} (every sheet, roster order), "
+              f"{issued.out / 'print' / 'keys.pdf'} (every key)")
     print(f"manifest: {issued.manifest}")
     return 0
 
@@ -313,6 +319,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
     p.add_argument("--no-pdf", action="store_true", help="Markdown only (faster)")
     p.add_argument("--jobs", type=_count(1), help="processes making PDFs (default: one per core, up to 8)")
+    p.add_argument("--print", action="store_true", help="also print/sheets.pdf, every sheet in roster order (each "
+                                                        "starting on a new leaf when printed on both sides), and "
+                                                        "print/keys.pdf, every key")
     p.set_defaults(func=cmd_generate)
 
     p = sub.add_parser("grade", help="grade a folder of returned answer files against what was issued")

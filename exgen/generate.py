@@ -8,6 +8,7 @@ files and keys go to separate folders so the `students/` folder can be handed ou
     OUT/students/<id>/sheet.md, sheet.pdf, answers.yaml, q1.svg ...
     OUT/keys/<id>/key.md, key.pdf, q1.svg ...
     OUT/manifest.json
+    OUT/print/sheets.pdf, keys.pdf      (with print=True: every sheet and every key, in roster order)
 """
 from __future__ import annotations
 
@@ -92,7 +93,7 @@ def default_jobs() -> int:
 
 def generate(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes, out: Path,
              *, pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress,
-             secret_source: str = "") -> Issued:
+             secret_source: str = "", print_bundle: bool = False) -> Issued:
     """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
     (exgen.outdir); with jobs > 1 the PDFs are made in parallel processes."""
     out = Path(out)
@@ -109,5 +110,9 @@ def generate(assignment: Assignment, students: list[Student], bank: Bank, secret
         else:
             for sheet in progress(sheets, len(sheets), "writing"):
                 write_student(sheet, folder, pdf)
+        if print_bundle and pdf:
+            from .render.bundle import write_bundles
+
+            write_bundles(folder, [s.student.id for s in sheets])
         write_manifest(manifest, folder / MANIFEST)
     return Issued(out, tuple(sheets), out / MANIFEST)

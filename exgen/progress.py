@@ -1,0 +1,50 @@
+"""Progress of long runs: a bar on a terminal, and periodic lines when the output is a log or a pipe
+(a four-minute `generate` under a scheduler or CI says how far it is, not nothing until the end)."""
+from __future__ import annotations
+
+import sys
+import time
+from typing import Iterable, Iterator, TextIO
+
+#: Without a terminal: a line each time another tenth is done, and at least every so many seconds.
+STEPS = 10
+EVERY_SECONDS = 15.0
+
+
+def progress(items: Iterable, total: int, label: str = "working", stream: TextIO | None = None) -> Iterable:
+    """`items`, reporting progress on `stream` (stderr): tqdm's bar on a terminal, lines otherwise."""
+    stream = stream or sys.stderr
+    if _is_terminal(stream):
+        from tqdm import tqdm
+
+        return tqdm(items, total=total, desc=label, unit="item", leave=False, file=stream)
+    return _lines(items, total, label, stream)
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
+def _lines(items: Iterable, total: int, label: str, stream: TextIO, clock=time.monotonic) -> Iterator:
+    """Yield the items; print "label: done/total (p %)" at each tenth and every EVERY_SECONDS, and a last
+    line with the time taken. Nothing for a run of one item or fewer."""
+    start = last = clock()
+    next_step = 1
+    done = 0
+    for item in items:
+        yield item
+        done += 1
+        if total <= 1:
+            continue
+        now = clock()
+        if done * STEPS >= next_step * total or now - last >= EVERY_SECONDS:
+            if done < total:
+                print(f"{label}: {done}/{total} ({100 * done // total} %)", file=stream, flush=True)
+            last = now
+            while next_step * total <= done * STEPS:
+                next_step += 1
+    if total > 1 and done:
+        print(f"{label}: {done}/{total} done in {clock() - start:.1f} s", file=stream, flush=True)
