@@ -42,6 +42,12 @@ def _count(minimum: int, maximum: int | None = None):
     return parse
 
 
+def _digits(text: str) -> str:
+    if not text.isdigit():
+        raise argparse.ArgumentTypeError(f"{text!r} is not a Canvas id (a number, as in the assignment's address)")
+    return text
+
+
 class _Parser(argparse.ArgumentParser):
     """Usage mistakes as one line (and the --help hint), like every other error of the command."""
 
@@ -198,7 +204,10 @@ def cmd_grade(args) -> int:
                          progress=_progress)
     for warning in batch.warnings:
         print(f"WARNING: {warning}", file=sys.stderr)
-    paths = write_results(batch, Path(args.out))
+    from graders.copying import signs_of_copying
+
+    signs = signs_of_copying(batch, manifest.assignment, bank, secret, manifest.codes)
+    paths = write_results(batch, Path(args.out), signs, canvas_id=args.canvas_id or "")
     print(batch.summary())
     for name, path in paths.items():
         print(f"{name}: {path}")
@@ -229,6 +238,14 @@ def cmd_export(args) -> int:
         print(f"note: {notice}", file=sys.stderr)
     path = writer(args.format)(pool, Path(args.out))
     print(f"{len(pool.questions)} question(s) x {args.variants} variant(s) as {args.format}: {path}")
+    return 0
+
+
+def cmd_report(args) -> int:
+    from graders.item_report import write_report
+
+    for name, path in write_report(Path(args.graded), Path(args.out) if args.out else None).items():
+        print(f"{name}: {path}")
     return 0
 
 
@@ -334,6 +351,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--roster", help="grade only these students (a class list CSV; all must have been issued sheets)")
     p.add_argument("--force", action="store_true",
                    help="grade even if the secret or a template differs from what was issued (warned in the report)")
+    p.add_argument("--canvas-id", type=_digits, help="the Canvas assignment's id, for the Canvas gradebook's column "
+                                                     "(without it, importing makes a new assignment)")
     p.set_defaults(func=cmd_grade)
 
     p = sub.add_parser("practice", help="practise alone in the terminal: a problem at a time, checked as you go",
@@ -357,6 +376,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--open", action="store_true", help="open the app in the web browser")
     _progress_options(p)
     p.set_defaults(func=cmd_serve)
+
+    p = sub.add_parser("report", help="item analysis of a grading run (HTML and Markdown)")
+    p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
+    p.add_argument("--out", help="where to write the pages (default: that folder)")
+    p.set_defaults(func=cmd_report)
 
     p = sub.add_parser("export", help="a pool of variants per question for a learning system (Moodle, QTI 2.1, Canvas)")
     p.add_argument("format", choices=("moodle", "qti", "canvas"), help="moodle: Moodle XML; qti: IMS QTI 2.1 package "

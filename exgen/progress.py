@@ -6,9 +6,11 @@ import sys
 import time
 from typing import Iterable, Iterator, TextIO
 
-#: Without a terminal: a line each time another tenth is done, and at least every so many seconds.
+#: Without a terminal: a line each time another tenth is done, and at least every so many seconds,
+#: once a run has lasted QUIET_SECONDS (a quick run prints nothing).
 STEPS = 10
 EVERY_SECONDS = 15.0
+QUIET_SECONDS = 2.0
 
 
 def progress(items: Iterable, total: int, label: str = "working", stream: TextIO | None = None) -> Iterable:
@@ -29,22 +31,20 @@ def _is_terminal(stream) -> bool:
 
 
 def _lines(items: Iterable, total: int, label: str, stream: TextIO, clock=time.monotonic) -> Iterator:
-    """Yield the items; print "label: done/total (p %)" at each tenth and every EVERY_SECONDS, and a last
-    line with the time taken. Nothing for a run of one item or fewer."""
+    """Yield the items; once QUIET_SECONDS have passed, print "label: done/total (p %)" at each tenth
+    and every EVERY_SECONDS, and at the end a line with the time taken."""
     start = last = clock()
     next_step = 1
-    done = 0
+    done, spoke = 0, False
     for item in items:
         yield item
         done += 1
-        if total <= 1:
-            continue
         now = clock()
-        if done * STEPS >= next_step * total or now - last >= EVERY_SECONDS:
-            if done < total:
-                print(f"{label}: {done}/{total} ({100 * done // total} %)", file=stream, flush=True)
-            last = now
-            while next_step * total <= done * STEPS:
-                next_step += 1
-    if total > 1 and done:
+        due = done * STEPS >= next_step * total or now - last >= EVERY_SECONDS
+        if due and done < total and now - start >= QUIET_SECONDS:
+            print(f"{label}: {done}/{total} ({100 * done // total} %)", file=stream, flush=True)
+            last, spoke = now, True
+        while next_step * total <= done * STEPS:
+            next_step += 1
+    if spoke:
         print(f"{label}: {done}/{total} done in {clock() - start:.1f} s", file=stream, flush=True)

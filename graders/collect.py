@@ -31,7 +31,7 @@ MAX_DEPTH = 4
 MAX_FILES = 5000
 
 #: Files grading itself writes, never read back as answers.
-OUTPUT_FILES = {"gradebook.csv"}
+OUTPUT_FILES = {"gradebook.csv", "canvas_gradebook.csv", "moodle_grades.csv", "parts.csv"}
 
 HIDDEN = "a hidden file; skipped"
 LINK = "a symbolic link; not followed"

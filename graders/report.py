@@ -30,22 +30,40 @@ _LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _ENTITY = re.compile(r"&(?=#?\w+;)")  # "&lt;" typed as text would show as "<" in HTML
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
 KIND = "grade"  # the marker a folder of grading results carries (exgen.outdir)
+CANVAS_GRADEBOOK, MOODLE_GRADES, PARTS = "canvas_gradebook.csv", "moodle_grades.csv", "parts.csv"
 
 
-def write_results(batch: BatchResult, out_dir: Path) -> dict[str, Path]:
-    """gradebook.csv, feedback/<student>.md and report.md under `out_dir`; returns their paths. The folder
-    is replaced whole when everything is written (exgen.outdir): never a new gradebook beside old feedback."""
+def write_results(batch: BatchResult, out_dir: Path, signs=(), canvas_id: str = "") -> dict[str, Path]:
+    """gradebook.csv, the Canvas and Moodle gradebooks, parts.csv, feedback/<student>.md, report.md,
+    results.json and the item analysis (HTML and Markdown) under `out_dir`; returns their paths. `signs`
+    are the signs of copying found (graders.copying), reported and never marked. The folder is replaced
+    whole when everything is written (exgen.outdir): never a new gradebook beside old feedback."""
+    from .gradebooks import write_canvas_gradebook, write_moodle_grades, write_parts
+    from .item_report import HTML, MARKDOWN, report_pages
+    from .record import RESULTS, batch_record, write_record
+
     out_dir = Path(out_dir)
     check_target(out_dir, KIND)
     feedback = {s.student.id: feedback_page(batch, s) for s in batch.sheets}
     report = report_page(batch)
+    record = batch_record(batch, signs)
+    pages = report_pages(record)
     with replacing(out_dir, KIND) as folder:
         (folder / "feedback").mkdir()
         write_gradebook(batch, folder / "gradebook.csv")
+        write_canvas_gradebook(batch, folder / CANVAS_GRADEBOOK, canvas_id)
+        write_moodle_grades(batch, folder / MOODLE_GRADES)
+        write_parts(batch, folder / PARTS)
         for student_id, page in feedback.items():
             (folder / "feedback" / f"{student_id}.md").write_text(page, encoding="utf-8")
         (folder / "report.md").write_text(report, encoding="utf-8")
-    return {"gradebook": out_dir / "gradebook.csv", "report": out_dir / "report.md", "feedback": out_dir / "feedback"}
+        write_record(record, folder / RESULTS)
+        for name, text in pages.items():
+            (folder / name).write_text(text, encoding="utf-8")
+    return {"gradebook": out_dir / "gradebook.csv", "canvas gradebook": out_dir / CANVAS_GRADEBOOK,
+            "moodle grades": out_dir / MOODLE_GRADES, "parts": out_dir / PARTS, "report": out_dir / "report.md",
+            "item analysis": out_dir / HTML, "item analysis (Markdown)": out_dir / MARKDOWN,
+            "results": out_dir / RESULTS, "feedback": out_dir / "feedback"}
 
 
 # ---- gradebook ----------------------------------------------------------------------------------
@@ -57,13 +75,14 @@ def write_gradebook(batch: BatchResult, path: Path) -> None:
         writer = csv.writer(handle)
         writer.writerow(header)
         for sheet in batch.sheets:
+            graded = sheet.status == GRADED  # nothing graded is blank, never 0
             marks = []
             for column in batch.columns:
                 question = sheet.question(column.slot)
-                marks.append(_num(question.points if question else 0.0))
+                marks.append(_num(question.points if question else 0.0) if graded else "")
             writer.writerow([_cell(sheet.student.id), _cell(sheet.student.name), _cell(sheet.student.email),
-                             *marks, _num(sheet.points), _num(sheet.max_points), f"{sheet.percent:.1f}",
-                             sheet.status])
+                             *marks, _num(sheet.points) if graded else "", _num(sheet.max_points),
+                             f"{sheet.percent:.1f}" if graded else "", sheet.status])
 
 
 def _cell(text: str) -> str:

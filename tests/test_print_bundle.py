@@ -8,7 +8,7 @@ from pypdf import PdfReader
 
 from exgen.assignment import Assignment, QuestionSpec, Student
 from exgen.generate import generate
-from exgen.progress import progress
+from exgen.progress import _lines, progress
 from exgen.render.bundle import join_pdfs
 
 SECRET = b"a course secret used only by these tests"
@@ -58,17 +58,28 @@ def test_joining_without_duplex_keeps_the_pages_as_they_are(issued, tmp_path):
     assert pages == sum(len(PdfReader(p).pages) for p in paths)
 
 
-def test_without_a_terminal_progress_is_a_line_at_each_tenth_and_a_last_one():
+class Clock:
+    """A clock that advances a second each time it is read."""
+
+    def __init__(self):
+        self.now = 0.0
+
+    def __call__(self):
+        self.now += 1.0
+        return self.now
+
+
+def test_without_a_terminal_a_long_run_says_each_tenth_and_how_long_it_took():
     stream = io.StringIO()
-    assert list(progress(range(20), 20, "writing", stream)) == list(range(20))
+    assert list(_lines(range(20), 20, "writing", stream, Clock())) == list(range(20))
     lines = stream.getvalue().splitlines()
     assert lines[0] == "writing: 2/20 (10 %)" and lines[-2] == "writing: 18/20 (90 %)"
-    assert len(lines) == 10 and lines[-1].startswith("writing: 20/20 done in ")
+    assert len(lines) == 10 and lines[-1] == "writing: 20/20 done in 21.0 s"
 
 
-def test_a_single_item_makes_no_noise():
+def test_a_quick_run_makes_no_noise():
     stream = io.StringIO()
-    assert list(progress(["x"], 1, "drawing", stream)) == ["x"]
+    assert list(progress(range(50), 50, "drawing", stream)) == list(range(50))
     assert stream.getvalue() == ""
 
 

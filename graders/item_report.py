@@ -1,0 +1,50 @@
+"""`exgen report GRADED_DIR`: the item analysis of a grading run as a self-contained HTML page (inline
+CSS and SVG, nothing fetched) and as Markdown, from its results.json. `exgen grade` writes both too."""
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+import jinja2
+
+from .analysis import LOW_DISCRIMINATION, analyse
+from .charts import facility_svg, histogram_svg
+from .echo import shown
+from .gradebooks import points
+from .record import read_record
+
+LAYOUTS = Path(__file__).parent / "layouts"
+HTML, MARKDOWN = "item-analysis.html", "item-analysis.md"
+_MD_SPECIAL = str.maketrans({c: "\\" + c for c in "\\`*_[]<>|"})
+
+
+@lru_cache(maxsize=2)
+def _environment(autoescape: bool) -> jinja2.Environment:
+    return jinja2.Environment(loader=jinja2.FileSystemLoader(str(LAYOUTS)), undefined=jinja2.StrictUndefined,
+                              autoescape=autoescape, trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+
+
+def _md(text) -> str:
+    """Text (which may quote what a student typed) as literal Markdown on one line."""
+    return shown(str(text), 400).translate(_MD_SPECIAL)
+
+
+def report_pages(record: dict) -> dict[str, str]:
+    analysis = analyse(record)
+    common = {"a": analysis, "points": points, "low": LOW_DISCRIMINATION}
+    html = _environment(True).get_template("analysis.html.j2").render(
+        common, histogram=histogram_svg(analysis), facility=facility_svg(analysis))
+    markdown = _environment(False).get_template("analysis.md.j2").render(common, md=_md)
+    return {HTML: html, MARKDOWN: markdown}
+
+
+def write_report(folder: Path, out: Path | None = None) -> dict[str, Path]:
+    """Read FOLDER/results.json and write the two pages into `out` (default: the same folder)."""
+    record = read_record(Path(folder))
+    out = Path(out) if out else Path(folder)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = {}
+    for name, text in report_pages(record).items():
+        (out / name).write_text(text, encoding="utf-8")
+        paths[name] = out / name
+    return paths

@@ -1,0 +1,58 @@
+"""results.json: everything a grading run found, per student and part, for `exgen report` to read back
+(item analysis and the signs of copying are computed from it, never from the feedback pages)."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from exgen.errors import ExgenError
+
+from .results import BatchResult
+
+RESULTS = "results.json"
+FORMAT = 1
+
+
+def batch_record(batch: BatchResult, signs: list[dict] | tuple = ()) -> dict:
+    """The batch as plain data: the questions and their parts, each student's marks and answers, the
+    files not graded, warnings, and the signs of copying found."""
+    columns = []
+    for column in batch.columns:
+        sample = next((q for s in batch.sheets for q in s.questions if q.slot == column.slot), None)
+        columns.append({"number": column.number, "slot": column.slot, "template": column.template,
+                        "title": sample.title if sample else column.template, "max_points": column.max_points,
+                        "parts": [{"id": p.part_id, "max_points": p.max_points} for p in (sample.parts if sample else ())]})
+    sheets = []
+    for sheet in batch.sheets:
+        s = sheet.student
+        sheets.append({
+            "student": {"id": s.id, "name": s.name, "email": s.email, "section": s.section},
+            "status": sheet.status, "points": sheet.points, "max_points": sheet.max_points, "code": sheet.code,
+            "code_mismatch": sheet.code_mismatch, "file": str(sheet.path) if sheet.path else "",
+            "parts": [{"slot": q.slot, "part": p.part_id, "status": p.status, "points": p.points,
+                       "max_points": p.max_points, "given": p.given, "expected": p.expected, "mistake": p.mistake}
+                      for q in sheet.questions for p in q.parts],
+        })
+    return {"format": FORMAT,
+            "assignment": {"id": batch.assignment.id, "title": batch.assignment.title, "course": batch.assignment.course},
+            "max_points": batch.max_points, "columns": columns, "sheets": sheets,
+            "problems": [{"path": str(p.path), "reason": p.reason, "student": p.student} for p in batch.problems],
+            "warnings": list(batch.warnings), "signs": list(signs)}
+
+
+def write_record(record: dict, path: Path) -> None:
+    path.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+
+
+def read_record(folder: Path) -> dict:
+    """results.json of a folder `exgen grade` wrote; ExgenError says what is wrong."""
+    path = Path(folder) / RESULTS if Path(folder).is_dir() else Path(folder)
+    try:
+        record = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise ExgenError(f"{path}: no such file; give the folder `exgen grade` wrote (its --out)") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ExgenError(f"{path}: cannot read the grading results: {exc}") from None
+    if not isinstance(record, dict) or record.get("format") != FORMAT or "sheets" not in record:
+        raise ExgenError(f"{path}: not grading results written by this version of exgen grade")
+    return record
