@@ -68,7 +68,8 @@ class Analysis:
 
     @property
     def nobody_right(self) -> tuple[PartStats, ...]:
-        return tuple(p for p in self.parts if p.n and p.right == 0)
+        """Parts some answered and none got right (a part everyone left blank is in most_blank)."""
+        return tuple(p for p in self.parts if p.statuses["wrong"] and p.right == 0)
 
     @property
     def most_blank(self) -> tuple[PartStats, ...]:

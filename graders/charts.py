@@ -40,7 +40,7 @@ def facility_svg(analysis: Analysis) -> Markup:
     for i, part in enumerate(parts):
         y = 10 + i * ROW
         facility = part.facility or 0.0
-        colour = "#c0392b" if part.n and part.right == 0 else (
+        colour = "#c0392b" if part.statuses["wrong"] and part.right == 0 else (
             "#e08e0b" if part.discrimination is not None and part.discrimination < LOW_DISCRIMINATION else "#4a78b5")
         d = "–" if part.discrimination is None else f"{part.discrimination:+.2f}"
         out.append(f'<text x="{LABEL - 6}" y="{y + 14}" text-anchor="end" font-size="12">{escape(part.label)}</text>')
