@@ -35,6 +35,10 @@ def _wheel_speed(p, d, radius_name: str, diameter: bool = False):
 def _heel(p, d, momentum_name: str):
     """The couples and the angle of heel from the total spin momentum step (Σ I ω)."""
     momentum = d.value_of(momentum_name)
+    # The working adds C_g to the centrifugal couple as overturning outwards, and the part asks for it
+    # with no sign: an engine turning against the wheels must not outweigh them.
+    d.require(momentum > 0, "the engine's spin against the wheels outweighs theirs: the gyroscopic couple would "
+                            "right the machine, not overturn it outwards")
     big_omega = d.step("Omega", gy.precession_rate(p.v, p.R), "rad/s", symbol=r"\Omega", formula=r"\frac{@v}{@R}",
                        note="the precession")
     gyro = d.step("C_g", momentum * big_omega, "N*m", symbol=r"C_g", formula=rf"@{momentum_name}\,@Omega",
