@@ -51,3 +51,15 @@ def test_every_named_mistake_is_recognised_with_its_own_words(bank):
                     seen.add((part.id, spec.when))
         named = {(p.id, m.when) for p in template.parts for m in p.mistakes}
         assert named == seen, (template_id, named - seen)
+
+
+def test_reversed_spring_feedback_holds_for_a_flywheel_turning_against_the_wheels(bank):
+    """A student who gives the other spring has most likely taken the flywheel's spin from the road wheels'
+    when the sheet says it turns the other way: the feedback must give the rule for that flywheel too,
+    not only the wheels' direction (which would confirm the slip)."""
+    template = bank.get("gyroscopes.vehicle_rotor_springs")
+    variant = next(v for v in (make_variant(template, s) for s in range(40)) if v.param("spin").text == "opposite")
+    wrong = "left" if variant.answers["f"].value == "right" else "right"
+    result = grade(variant, "f", wrong)
+    assert result.mistake == "precession_reversed"
+    assert "opposite" in result.message and "to its right" in result.message
