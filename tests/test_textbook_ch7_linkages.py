@@ -148,3 +148,17 @@ def test_two_position_synthesis_pivots_on_the_floor(bank):
         assert math.hypot(p1[0] - x, p1[1]) == pytest.approx(math.hypot(p2[0] - x, p2[1]))  # on the bisector
         assert got[r_part] == pytest.approx(math.hypot(p1[0] - x, p1[1]))
     assert got["e"] in ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
+
+
+@pytest.mark.parametrize("slider, line, where", [
+    ("right", "horizontal line of slide 20 mm below A", "with the slider to the right of A."),
+    ("left", "horizontal line of slide 20 mm below A", "with the slider to the left of A."),
+    ("below", "vertical line of slide 20 mm to the right of A", "with the slider below A."),
+    ("above", "vertical line of slide 20 mm to the right of A", "with the slider above A."),
+])
+def test_slider_crank_statement_says_where_the_slider_runs_in_plain_words(bank, slider, line, where):
+    variant, _ = solve(bank.get("linkages.slider_crank"), {
+        "slider": slider, "L1": "20 mm", "L2": "50 mm", "L3": "180 mm", "theta2": "60 deg", "xA": "0 mm",
+        "yA": "0 mm", "tip": "40 mm"})
+    statement = " ".join(variant.statement.split())
+    assert line in statement and where in statement
