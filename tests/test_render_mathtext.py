@@ -4,7 +4,8 @@ import json
 import pytest
 import typst
 
-from exgen.render.mathtext import (MathError, escape_markdown, escape_typst, latex_to_typst, split_math,
+from exgen.figures.metrics import FAMILY
+from exgen.render.mathtext import (UNIT_DOT, MathError, escape_markdown, escape_typst, latex_to_typst, split_math,
                                    text_to_markdown, text_to_typst, typst_string)
 from exgen.render.unicode_math import latex_to_unicode, text_to_plain
 
@@ -62,12 +63,23 @@ def test_split_math(text, chunks):
     ("2. step", r"2\. step"),
     ("line\n- item", "line\n\\- item"),
     ("x-? y", r"x-\? y"),
-    ("mm² N·m θ", "mm² #box[N#h(-0.2em)·#h(-0.2em)m] θ"),   # tight and unbroken, like the key's math N·m
-    ("(kg·m²)", "#box[(kg#h(-0.2em)·#h(-0.2em)m²)]"),
+    ("mm² N·m θ", f"mm² #box[N{UNIT_DOT}m] θ"),   # tight and unbroken, like the key's math N·m
+    ("(kg·m²)", f"#box[(kg{UNIT_DOT}m²)]"),
     ("course · title", "course · title"),
 ])
 def test_escape_typst(prose, escaped):
     assert escape_typst(prose) == escaped
+
+
+@pytest.mark.parametrize("weight", ["regular", "bold"])
+def test_a_units_dot_keeps_clear_of_its_letters_in_either_weight(weight):
+    """The keys' Answers table sets units in bold: the dot of N·m must add width there as in the body text,
+    never overlap the N (a fixed negative space that closes up the regular face's wide dot did)."""
+    unit = escape_typst("kN·m")
+    source = (f'#set text(font: "{FAMILY}", size: 10pt, weight: "{weight}")\n'
+              f'#context [#metadata(measure[{unit}].width.pt() - measure[kNm].width.pt()) <m>]').encode()
+    extra = json.loads(typst.query(source, "<m>", field="value", one=True))
+    assert 1.0 < extra < 3.5   # points at 10 pt: a visible dot, set tight
 
 
 def _flatten(node) -> str:

@@ -56,12 +56,15 @@ def escape_typst(prose: str) -> str:
 _APOSTROPHE_AFTER_DIGIT = re.compile(r"(?<=\d)'(?=[A-Za-z])")
 _PRIME_AFTER_DIGIT = re.compile("(?<=[0-9\u2080-\u2089])'")
 #: A word with a middle dot in it, a unit such as N·m or kg·m²: the body font's dot stands spaced
-#: ("N · m") where the key's math sets it tight, so the prose closes it up, in a box that never breaks.
+#: ("N · m") where the key's math sets it tight, so the prose sets the math face's dot operator instead,
+#: in a box that never breaks. (A fixed negative space round the body's dot closed up the regular face
+#: but ran the bold face's narrower dot into the N of the keys' Answers table.)
 _DOTTED_UNIT = re.compile("\\S+\u00b7\\S+")  # not a spaced separator, " · "
+UNIT_DOT = '#text(font: "New Computer Modern Math")[\u22c5]'
 
 
 def _tight_unit(match: re.Match) -> str:
-    return "#box[" + match.group(0).replace("\u00b7", "#h(-0.2em)\u00b7#h(-0.2em)") + "]"
+    return "#box[" + match.group(0).replace("\u00b7", UNIT_DOT) + "]"
 
 
 def escape_markdown(prose: str) -> str:
