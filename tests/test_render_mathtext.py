@@ -107,6 +107,16 @@ def test_escaped_prose_typesets_as_itself(prose):
     assert _flatten(value) == prose
 
 
+@pytest.mark.parametrize("prose, shown", [
+    ("A at (-100 mm, -190 mm)", "A at (−100 mm, −190 mm)"),   # Typst makes the second a minus by itself
+    ("MN at -5° and [-3, 4]", "MN at −5° and [−3, 4]"),
+    ("steps 2-60 mm, eqs 7.5-7.6, a-3", "steps 2-60 mm, eqs 7.5-7.6, a-3"),   # ranges and names keep their hyphen
+])
+def test_a_negative_number_is_set_with_a_minus_sign_wherever_it_stands(prose, shown):
+    source = f"#metadata[{escape_typst(prose)}] <m>".encode()
+    assert _flatten(json.loads(typst.query(source, "<m>", field="value", one=True))) == shown
+
+
 @pytest.mark.parametrize("prose, escaped", [
     ("plain 3.5 m", "plain 3.5 m"),
     ("*a* _b_ `c`", r"\*a\* \_b\_ \`c\`"),

@@ -46,6 +46,7 @@ def escape_typst(prose: str) -> str:
     text = "".join("\\" + ch if ch in _TYPST_ALWAYS else ch for ch in prose)
     text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
     text = _DOTTED_UNIT.sub(_tight_unit, text)
+    text = _NEGATIVE_NUMBER.sub("\u2212", text)
     # Typst turns ' after a digit into a prime, a glyph the body face lacks: "gear 1's" keeps an apostrophe,
     # and a prime ("l₃'") is written as one, which the layouts set from the math face
     text = _APOSTROPHE_AFTER_DIGIT.sub("\u2019", text)
@@ -53,6 +54,9 @@ def escape_typst(prose: str) -> str:
     return _TYPST_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
 
 
+#: A hyphen before a digit that follows no word, number or closing bracket is a negative sign: Typst sets
+#: it as a minus after a space but not after "(" or "[", so "(-100 mm, -190 mm)" mixed the two.
+_NEGATIVE_NUMBER = re.compile(r"(?<![\w.)\]\-\u2080-\u2089\u2070-\u2079])-(?=\d)")
 _APOSTROPHE_AFTER_DIGIT = re.compile(r"(?<=\d)'(?=[A-Za-z])")
 _PRIME_AFTER_DIGIT = re.compile("(?<=[0-9\u2080-\u2089])'")
 #: A word with a middle dot in it, a unit such as N·m or kg·m²: the body font's dot stands spaced
