@@ -67,15 +67,23 @@ def hartnell_spring(p, d):
     d.mistake("s", "arms_inverted", (forces[1] - forces[0]) / ((p.r2 - p.r1) * p.a / p.b), if_apart=True)
 
 
+#: Why the governor is what it is, by the sign of the controlling-force line's intercept b (§4.8).
+_STABILITY_REASON = {
+    gv.STABLE: "b < 0: the line cuts the force axis below the origin, so F/r rises with r",
+    gv.ISOCHRONOUS: "b = 0: the line passes through the origin, so F/r is the same at every radius",
+    gv.UNSTABLE: "b > 0: the line cuts the force axis above the origin, so F/r falls as r rises",
+}
+
+
 def spring_controlled(p, d):
     """Problem 4.6: a straight controlling-force line through two measured points: the radius at a speed,
     the change of spring load that makes it isochronous, and the speed it would then run at."""
     slope = d.step("k_F", (p.F2 - p.F1) / (p.r2 - p.r1), "N/m", symbol=r"a", formula=r"\frac{@F2 - @F1}{@r2 - @r1}",
                    note="F = a r + b, a straight controlling-force line")
     intercept = d.step("b_F", p.F1 - slope * p.r1, "N", symbol=r"b", formula=r"@F1 - @k_F\,@r1")
-    d.step("kind", gv.stability(intercept, p.F2), "", symbol=r"\text{governor}",
-           note="b < 0: the line cuts the force axis below the origin, F/r rises with r")
-    d.mistake("kind", "stability_inverted", {gv.STABLE: gv.UNSTABLE, gv.UNSTABLE: gv.STABLE}.get(gv.stability(intercept, p.F2), gv.STABLE))
+    kind = gv.stability(intercept, p.F2)
+    d.step("kind", kind, "", symbol=r"\text{governor}", note=_STABILITY_REASON[kind])
+    d.mistake("kind", "stability_inverted", {gv.STABLE: gv.UNSTABLE, gv.UNSTABLE: gv.STABLE}.get(kind, gv.STABLE))
     d.require(abs(intercept) >= 0.05 * p.F1, "a line too near the origin to tell stable from isochronous")
     radius = d.step("r", gv.radius_at_speed(p.m, p.N, slope, intercept), "m",
                     formula=r"\frac{@b_F}{@m\,@N^2 - @k_F}", note=r"where $m\omega^2 r = a r + b$")

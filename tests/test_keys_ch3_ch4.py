@@ -1,0 +1,33 @@
+"""What the chapter 3-4 sheets and keys say, read as a student and a lecturer would: the reasons a key
+gives match its numbers, the wording reads for every draw, the machines drawn could be built."""
+import math
+
+from textbook_helpers import answers
+
+
+def _note(variant, step):
+    return next(s.note for s in variant.steps if s.name == step)
+
+
+def test_the_stability_reason_follows_the_sign_of_the_intercept(bank):
+    # Problem 4.6's line cuts the force axis below the origin: stable.
+    _, stable, _ = answers(bank, "governors.spring_controlled", m="30 kg", r1="190 mm", F1="4250 N",
+                           r2="300 mm", F2="7500 N", N="250 rpm")
+    assert stable.answers["a"].value == "stable"
+    assert _note(stable, "kind").startswith("b < 0") and "below the origin" in _note(stable, "kind")
+    # The sheet drawn as Question 18 of a review: b = +737.5 N, above the origin: unstable.
+    _, unstable, _ = answers(bank, "governors.spring_controlled", m="18 kg", r1="150 mm", F1="2500 N",
+                             r2="350 mm", F2="4850 N", N="300 rpm")
+    assert unstable.answers["a"].value == "unstable"
+    assert _note(unstable, "kind").startswith("b > 0") and "above the origin" in _note(unstable, "kind")
+    assert "falls" in _note(unstable, "kind")
+
+
+def test_the_wrong_way_for_the_spring_load_is_explained(bank):
+    from graders.grade import grade_variant
+
+    _, variant, _ = answers(bank, "governors.spring_controlled", m="30 kg", r1="190 mm", F1="4250 N",
+                            r2="300 mm", F2="7500 N", N="250 rpm")
+    given = {part: a.text for part, a in variant.answers.items()} | {"d": "decrease"}
+    result = next(p for p in grade_variant(variant, given).parts if p.part_id == "d")
+    assert result.status == "wrong" and "through the origin" in result.message and "rises by |b|" in result.message
