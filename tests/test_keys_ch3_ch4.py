@@ -31,3 +31,15 @@ def test_the_wrong_way_for_the_spring_load_is_explained(bank):
     given = {part: a.text for part, a in variant.answers.items()} | {"d": "decrease"}
     result = next(p for p in grade_variant(variant, given).parts if p.part_id == "d")
     assert result.status == "wrong" and "through the origin" in result.message and "rises by |b|" in result.message
+
+
+def test_a_flywheel_rim_is_thin_beside_its_radius(bank):
+    """I = m R² takes the rim's mass at its mean radius: a section as thick as the radius is a disc, not a rim
+    (Problem 3.1's is 67 mm thick on a 325 mm radius)."""
+    from exgen.variant import make_variant
+
+    template = bank.get("flywheels.flywheel_rim")
+    for seed in range(120):
+        variant = make_variant(template, seed)
+        radius_mm = variant.param("D").si * 1000 / 2
+        assert variant.answers["c"].value <= 0.35 * radius_mm, seed
