@@ -43,3 +43,31 @@ def test_a_flywheel_rim_is_thin_beside_its_radius(bank):
         variant = make_variant(template, seed)
         radius_mm = variant.param("D").si * 1000 / 2
         assert variant.answers["c"].value <= 0.35 * radius_mm, seed
+
+
+def _number(text: str) -> float:
+    return float(text.split()[0].replace("\u2212", "-"))
+
+
+#: Parts worked as a difference of two earlier answers: (template, part, the part from the earlier answers as printed).
+DIFFERENCES = [
+    ("governors.porter_dead_load", "d", lambda v, a: v.param("N").si / (a["b"] - a["c"])),
+    ("governors.porter_friction", "d", lambda v, a: a["b"] - a["c"]),
+    ("governors.porter_speed_range", "c", lambda v, a: a["b"] - a["a"]),
+]
+
+
+def test_a_difference_worked_from_answers_kept_to_four_figures_is_right(bank):
+    """The sheet asks for four significant figures; a student who works a sensitivity or a range of speed from
+    the speeds as they wrote them down (as the text's Example 4.1 does) has worked it right."""
+    from exgen.variant import make_variant
+    from graders.grade import grade_variant
+
+    for template_id, part, worked in DIFFERENCES:
+        template = bank.get(template_id)
+        for seed in range(250):
+            variant = make_variant(template, seed)
+            given = {p: a.text for p, a in variant.answers.items()}
+            given[part] = f"{worked(variant, {p: _number(t) for p, t in given.items()}):.6g}"
+            result = next(r for r in grade_variant(variant, given).parts if r.part_id == part)
+            assert result.status == "correct", (template_id, seed, given[part], variant.answers[part].text)
