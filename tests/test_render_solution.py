@@ -25,6 +25,7 @@ def param(name, exact, unit, si, symbol=""):
 @pytest.mark.parametrize("unit, expected", [
     ("mm", "m"), ("rpm", "rad/s"), ("kN", "N"), ("MN/m^2", "N/m^2"), ("kW", "W"), ("deg", "rad"),
     ("percent", ""), ("kg/m", "kg/m"), ("mm^2", "m^2"), ("1/in", "1/m"), ("not-a-unit", None),
+    ("kN*m", "N*m"), ("kJ", "J"), ("MJ", "J"), ("kW*h", "J"),   # an energy in joules, a torque in N·m
 ])
 def test_si_unit(unit, expected):
     assert si_unit(unit) == expected

@@ -29,12 +29,25 @@ SI_UNITS = {
 }
 
 
+#: Units that are energies by name, where the dimension of torque and energy is one: their SI unit is J, not N·m.
+ENERGY_WORDS = ("joule", "watt", "calorie", "btu", "erg", "electron_volt")
+
+
 def si_unit(unit: str) -> str | None:
-    """The SI unit a solver uses for a quantity printed in `unit`, or None if unknown."""
+    """The SI unit a solver uses for a quantity printed in `unit`, or None if unknown (an energy in J)."""
     try:
-        return SI_UNITS.get(units.unit_info(unit).kind)
+        kind = units.unit_info(unit).kind
     except ExgenError:
         return None
+    if kind == "torque or energy" and _names_an_energy(unit):
+        return "J"
+    return SI_UNITS.get(kind)
+
+
+@lru_cache(maxsize=64)
+def _names_an_energy(unit: str) -> bool:
+    spelled = str(units.registry().parse_units(units.normalise_unit(unit)))
+    return any(word in spelled for word in ENERGY_WORDS)
 
 
 @lru_cache(maxsize=512)
