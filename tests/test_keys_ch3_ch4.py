@@ -71,3 +71,17 @@ def test_a_difference_worked_from_answers_kept_to_four_figures_is_right(bank):
             given[part] = f"{worked(variant, {p: _number(t) for p, t in given.items()}):.6g}"
             result = next(r for r in grade_variant(variant, given).parts if r.part_id == part)
             assert result.status == "correct", (template_id, seed, given[part], variant.answers[part].text)
+
+
+def test_statements_read_right_for_every_draw(bank):
+    from exgen.variant import make_variant
+
+    for seed in range(60):
+        engine = make_variant(bank.get("flywheels.energy_coefficient"), seed).statement
+        assert "every one revolution" not in engine
+        machine = make_variant(bank.get("flywheels.torque_time"), seed)
+        base = machine.param("T").si - (machine.param("t4").si - machine.param("t1").si)
+        if base < 0.5 * machine.param("T").si:   # the pulse takes most of the cycle
+            assert "most of its cycle" not in machine.statement
+        if machine.param("dwell").text == "0":   # the torque falls as soon as it peaks
+            assert "stays at" not in machine.statement and "then at once falls" in machine.statement
