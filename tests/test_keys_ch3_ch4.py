@@ -85,3 +85,16 @@ def test_statements_read_right_for_every_draw(bank):
             assert "most of its cycle" not in machine.statement
         if machine.param("dwell").text == "0":   # the torque falls as soon as it peaks
             assert "stays at" not in machine.statement and "then at once falls" in machine.statement
+
+
+def test_unequal_offsets_are_explained_whichever_pivots_are_farther_out(bank):
+    """Upper pivots 30 mm out and lower 20 mm: the lower arms lean more than the upper, not less."""
+    from graders.grade import grade_variant
+
+    _, variant, _ = answers(bank, "governors.porter_speed_range", l="280 mm", e_u="30 mm", e_l="20 mm", m="2 kg",
+                            M="20 kg", r1="100 mm", r2="145 mm")
+    slip = variant.mistakes["a"]["offset_ignored"]
+    given = {part: a.text for part, a in variant.answers.items()} | {"a": f"{slip:.5g} rpm"}
+    result = next(p for p in grade_variant(variant, given).parts if p.part_id == "a")
+    assert result.mistake == "offset_ignored" and "lean less" not in result.message
+    assert "different distances from the axis" in result.message
