@@ -98,3 +98,14 @@ def test_unequal_offsets_are_explained_whichever_pivots_are_farther_out(bank):
     result = next(p for p in grade_variant(variant, given).parts if p.part_id == "a")
     assert result.mistake == "offset_ignored" and "lean less" not in result.message
     assert "different distances from the axis" in result.message
+
+
+def test_a_proell_key_writes_the_upright_extension_plainly(bank):
+    """At the lowest position the extension is upright: XZ = l cos β₁ + e and the ball turns at r₁, not
+    e cos(β₁ − β₁) and r₁ + e sin(β₁ − β₁)."""
+    _, variant, _ = answers(bank, "governors.proell_speeds", l="300 mm", e_u="0 mm", e_l="40 mm", e="100 mm",
+                            m="5 kg", M="40 kg", r1="170 mm", r2="215 mm")
+    formulas = " ".join(s.formula for s in variant.steps)
+    assert r"@beta_1 - @beta_1" not in formulas
+    assert variant.step("XZ_1").formula == r"@l\cos @beta_1 + @e"
+    assert variant.step("x_1").formula == "@r1"

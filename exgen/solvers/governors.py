@@ -44,14 +44,20 @@ def _position(p, d, linkage: gv.Linkage, tag: str, r_name: str, r: float, sleeve
            formula=rf"\sin^{{-1}}\frac{{@{r_name} - @e_u}}{{@l}}", note=note)
     d.step(f"beta_{tag}", at.beta, "rad", symbol=rf"\beta_{tag}", formula=rf"\sin^{{-1}}\frac{{@{r_name} - @e_l}}{{@l}}")
     arms = gv.lever_arms(linkage, at, extension, tilt)
-    if extension:
+    if extension and not tilt:
+        d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}", formula=rf"@l\cos @beta_{tag} + @e",
+               note="height of the ball above the sleeve pivots: the extension is upright")
+        d.step(f"x_{tag}", arms.ball_radius, "m", symbol=rf"r_{{b{tag}}}", formula=f"@{r_name}",
+               note="the ball turns at the joint's radius")
+    elif extension:
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}",
                formula=rf"@l\cos @beta_{tag} + @e\cos(@beta_{tag} - @beta_1)",
                note="height of the ball above the sleeve pivots")
         d.step(f"x_{tag}", arms.ball_radius, "m", symbol=rf"r_{{b{tag}}}", formula=rf"@{r_name} + @e\sin(@beta_{tag} - @beta_1)",
                note="radius of the ball's path: the extension turns with the lower arm")
+    if extension:
         d.step(f"IZ_{tag}", arms.IZ, "m", symbol=rf"IZ_{tag}",
-               formula=rf"@l\cos @beta_{tag}\tan @alpha_{tag} + @{r_name} - @x_{tag}")
+               formula=rf"@l\cos @beta_{tag}\tan @alpha_{tag}" + (rf" + @{r_name} - @x_{tag}" if tilt else ""))
     else:
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}", formula=rf"@l\cos @beta_{tag}",
                note="height of the ball above the sleeve pivots")
