@@ -62,9 +62,16 @@ def test_half_a_turn_out_is_named_generically_when_no_template_mistake_explains_
 @pytest.mark.parametrize("given, expected", [
     ("CCW", "counter-clockwise"), ("anti-clockwise", "counter-clockwise"), ("cw", "clockwise"),
     ("Unbalanced", "not balanced"), ("Counter Clockwise", "counter-clockwise"),
+    ("Raise the bow", "raises the bow"), ("nose down", "lowers the nose"), ("to Starboard", "starboard"),
+    ("rear axle", "rear"), ("None", "no effect"), ("relieve", "relieves"), ("right spring", "right"),
 ])
 def test_choice_aliases(given, expected):
     assert choice(given, expected, choice_aliases())
+
+
+def test_every_alias_names_a_choice_some_template_offers(bank):
+    offered = {c for t in bank for p in t.parts for c in p.options.get("choices", ())}
+    assert {alias: meant for alias, meant in choice_aliases().items() if meant not in offered} == {}
 
 
 def test_an_error_in_a_polar_part_is_carried_forward(variant):
