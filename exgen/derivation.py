@@ -77,22 +77,27 @@ class Table:
 
 
 class Params:
-    """The given data of one variant, in SI, read as attributes: `p.d1`."""
+    """The given data of one variant, in SI, read as attributes: `p.d1`. `read` collects the names the
+    solver asked for, so that a key lists only the givens this variant uses (one idler or two)."""
 
     def __init__(self, values: dict[str, Any], symbols: dict[str, str]):
         self._values = dict(values)
         self._symbols = dict(symbols)
+        self.read: set[str] = set()
 
     def __getattr__(self, name: str):
         try:
-            return self._values[name]
+            value = self._values[name]
         except KeyError:
             raise AttributeError(f"no parameter named {name!r}") from None
+        self.read.add(name)
+        return value
 
     def __contains__(self, name: str) -> bool:
         return name in self._values
 
     def as_dict(self) -> dict[str, Any]:
+        self.read.update(self._values)
         return dict(self._values)
 
 

@@ -11,7 +11,7 @@ from typing import Any, Mapping
 from . import units
 from .answertypes import answer_type
 from .answertypes.base import MISTAKE_GAP
-from .derivation import Derivation, Params, Step, default_symbol
+from .derivation import PLACEHOLDER, Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw
 from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
@@ -71,6 +71,7 @@ class Variant:
     warnings: tuple[str, ...] = ()
     inserts: tuple = ()  # tables of the worked solution (derivation.Table)
     derived: tuple[Reading, ...] = ()  # the template's `report:` quantities, in their units
+    unused: frozenset[str] = frozenset()  # givens its text and working leave out (one idler: the second's teeth)
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -136,15 +137,42 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
     for part in template.parts:
         answers[part.id] = answer_for(part, derivation)
         mistakes[part.id] = MappingProxyType(mistakes_apart(part, answers[part.id].value, derivation, check))
-    context = {p.name: p for p in params}
+    printed: set[str] = set()
+    context = {p.name: _Watched(p, printed) for p in params}
+    statement = render_text(template.statement, context)
+    asks = {p.id: render_text(p.ask, context) for p in template.parts}
+    used = printed | derivation.params.read | _named_in_working(derivation)
     return Variant(
         template=template, seed=seed, params=params, steps=tuple(derivation.steps),
         answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
-        statement=render_text(template.statement, context),
-        asks=MappingProxyType({p.id: render_text(p.ask, context) for p in template.parts}),
+        statement=statement, asks=MappingProxyType(asks),
         tries=tries, warnings=tuple(derivation.warnings) + tuple(found_warnings), inserts=tuple(derivation.inserts),
-        derived=derived,
+        derived=derived, unused=frozenset(p.name for p in params if p.name not in used),
     )
+
+
+class _Watched:
+    """A given as a text sees it, noting in `seen` that the text printed or tested it (a branch not
+    taken, `{% if idlers.text == "2" %}...{{ tb }}`, leaves `tb` unseen)."""
+
+    __slots__ = ("_value", "_seen")
+
+    def __init__(self, value: ParamValue, seen: set[str]):
+        self._value, self._seen = value, seen
+
+    def __str__(self) -> str:
+        self._seen.add(self._value.name)
+        return str(self._value)
+
+    def __getattr__(self, name: str):
+        self._seen.add(self._value.name)
+        return getattr(self._value, name)
+
+
+def _named_in_working(derivation: Derivation) -> set[str]:
+    """Givens a formula or a table of the working names as @name."""
+    names = {m for step in derivation.steps for m in PLACEHOLDER.findall(step.formula or "")}
+    return names.union(*(table.names for table in derivation.inserts))
 
 
 def mistakes_apart(part: PartSpec, answer, derivation: Derivation, check: bool = True) -> dict[str, Any]:

@@ -91,7 +91,7 @@ def test_key_holds_answers_given_data_and_working(sheet, key_md):
         for answer in q.variant.answers.values():
             assert f"**{answer_type(answer.part).key_text(answer, MARKDOWN)}**" in key_md  # a formula prints as math
         for p in q.variant.params:
-            assert f"| ${p.symbol}$ | {p}" in key_md
+            assert (f"| ${p.symbol}$ | {p}" in key_md) == (p.name not in q.variant.unused)
     assert key_md.count("### Worked solution") == len(sheet.questions)
 
 

@@ -15,7 +15,7 @@ from exgen.variant import Answer, ParamValue, make_variant
 def fake_variant(steps, params=(), parts=(), answers=None, inserts=()):
     template = SimpleNamespace(id="test.fake", parts=tuple(parts))
     return SimpleNamespace(template=template, steps=tuple(steps), params=tuple(params), answers=answers or {},
-                           inserts=tuple(inserts))
+                           inserts=tuple(inserts), unused=frozenset())
 
 
 def param(name, exact, unit, si, symbol=""):

@@ -163,8 +163,11 @@ def _answered(variant) -> dict[str, list[str]]:
 
 
 def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
+    """The givens this variant uses, in the template's order (a second idler's teeth only with two idlers)."""
     out = []
     for p in variant.params:
+        if p.name in variant.unused:
+            continue
         si_text = None
         target = si_unit(p.unit) if p.unit else None
         if p.name in in_si and isinstance(p.si, (int, float)) and target is not None:
