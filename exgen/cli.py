@@ -403,7 +403,11 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        return args.func(args)
+        status = args.func(args)
+        sys.stdout.flush()  # a reader that went away (`exgen list | head`) shows here, not at exit
+        return status
+    except BrokenPipeError:
+        return _reader_gone()
     except ExgenError as exc:
         print(f"exgen: {exc}", file=sys.stderr)
         return 1
@@ -414,6 +418,17 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("exgen: interrupted", file=sys.stderr)
         return 130
+
+
+def _reader_gone() -> int:
+    """The program reading our output closed it: stop quietly, as `yes | head` does, with the status a
+    shell gives a process that SIGPIPE ended. Output still buffered goes nowhere instead of raising again
+    when the interpreter flushes it at exit."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout is no file (captured, replaced): nothing is flushed to it at exit
+        pass
+    return 128 + 13  # 128 + SIGPIPE
 
 
 if __name__ == "__main__":

@@ -1,6 +1,9 @@
 """The `exgen` command as a user types it: output, exit status, and errors without tracebacks."""
 import json
+import os
 import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -139,3 +142,17 @@ def test_grade_without_the_secret_says_so(tmp_path, capsys, monkeypatch):
 def test_validate_passes_on_the_bank(capsys):
     assert main(["validate", "belts.drive_geometry", "--seeds", "30"]) == 0
     assert "1 of 1 template(s) valid" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("argv", [["list"], ["show", "gears.simple_train", "--seed", "3", "--key"]])
+def test_a_reader_that_closes_early_ends_the_command_quietly(argv):
+    """`exgen list | head`: the reader is gone before anything is written, so every write meets a closed pipe."""
+    read_end, write_end = os.pipe()
+    os.close(read_end)
+    try:
+        done = subprocess.run([sys.executable, "-c", "import sys; from exgen.cli import main; sys.exit(main())", *argv],
+                              stdout=write_end, stderr=subprocess.PIPE, text=True, timeout=120)
+    finally:
+        os.close(write_end)
+    assert "Traceback" not in done.stderr and "Broken pipe" not in done.stderr and "Exception" not in done.stderr
+    assert done.returncode == 141  # as a shell reports a process that SIGPIPE ended
