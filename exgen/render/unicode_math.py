@@ -22,6 +22,8 @@ SYMBOLS = {
     "lceil": "⌈", "rceil": "⌉", "lfloor": "⌊", "rfloor": "⌋", "%": "%", "$": "$", "{": "{", "}": "}",
     "_": "_", "#": "#", "&": "&", "ldots": "…", "dots": "…", "cdots": "⋯", "partial": "∂", "sum": "Σ",
 }
+#: A fraction of small whole numbers written as one character where a factor follows it: ½I, not 1/2I.
+VULGAR = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"): "¼", ("3", "4"): "¾"}
 SPACES = {",": "", ":": " ", ";": " ", " ": " ", "!": "", "quad": "  ", "qquad": "   "}
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "cosec", "arcsin", "arccos", "arctan", "sinh",
              "cosh", "tanh", "ln", "log", "exp", "max", "min", "lim", "det"}
@@ -110,6 +112,23 @@ class _Parser:
             return token
         return self.command(token[1:])
 
+    def _factor_follows(self) -> str | None:
+        """What follows, if it multiplies what came before ("digit" or "term"); None if an operator or nothing."""
+        at = self.at
+        while at < len(self.tokens) and self.tokens[at] in (" ", "\\,", "\\!", "\\;", "\\:", "\\ "):
+            at += 1
+        token = self.tokens[at] if at < len(self.tokens) else None
+        if token is None:
+            return None
+        if token[0].isdigit():
+            return "digit"
+        if token.startswith("\\"):
+            name = token[1:]
+            multiplies = name in GREEK or name in FUNCTIONS or name in TEXT_COMMANDS or name in (
+                "frac", "dfrac", "tfrac", "sqrt", "left", "vec")
+            return "term" if multiplies else None
+        return "term" if token.isalpha() or token in ("(", "[", "{") else None
+
     def _unary(self) -> bool:
         """A minus with no operand before it (at the start, after a bracket or an operator) is a sign."""
         at = self.at - 2
@@ -123,7 +142,13 @@ class _Parser:
     def command(self, name: str) -> str:
         if name == "frac" or name in ("dfrac", "tfrac"):
             top, bottom = self.argument(), self.argument()
-            return f"{_grouped(top)}/{_grouped(bottom)}"
+            text = f"{_grouped(top)}/{_grouped(bottom)}"
+            factor = self._factor_follows()
+            if not factor:
+                return text
+            if factor != "digit" and (top, bottom) in VULGAR:
+                return VULGAR[top, bottom]
+            return f"({text})"  # "1/2I" would read 1/(2I)
         if name == "sqrt":
             return "√" + _grouped(self.argument())
         if name == "operatorname":
