@@ -109,3 +109,13 @@ def test_a_proell_key_writes_the_upright_extension_plainly(bank):
     assert r"@beta_1 - @beta_1" not in formulas
     assert variant.step("XZ_1").formula == r"@l\cos @beta_1 + @e"
     assert variant.step("x_1").formula == "@r1"
+
+
+def test_the_crossings_of_greatest_and_least_speed_read_as_a_sentence(bank):
+    from exgen.render.unicode_math import latex_to_unicode
+
+    _, variant, _ = answers(bank, "flywheels.speed_fluctuation", a1="295 mm^2", a2="685 mm^2", a3="40 mm^2",
+                            a4="340 mm^2", a5="960 mm^2", first="above", Ts="5 N*m", As="1 deg", N="1800 rpm",
+                            m="36 kg", k="150 mm")
+    lines = [f"{latex_to_unicode(variant.step(n).symbol)} = {variant.step(n).value}" for n in ("fastest", "slowest")]
+    assert lines == ["crossing of ωₘₐₓ = B", "crossing of ωₘᵢₙ = E"]   # Example 3.1: B and E

@@ -42,8 +42,8 @@ def _crossings(p, d, count: int, name_extremes: bool) -> tuple[float, float]:
         ranked = sorted(levels[:-1], reverse=True)
         d.require(ranked[0] - ranked[1] >= 0.02 * swing and ranked[-2] - ranked[-1] >= 0.02 * swing,
                   "two crossings nearly tie for the greatest or least energy")
-        d.step("fastest", letters[high], "", symbol=r"\omega_{\max}\ \text{at}", note="the greatest energy")
-        d.step("slowest", letters[low], "", symbol=r"\omega_{\min}\ \text{at}", note="the least energy")
+        d.step("fastest", letters[high], "", symbol=r"\text{crossing of }\omega_{\max}", note="the greatest energy")
+        d.step("slowest", letters[low], "", symbol=r"\text{crossing of }\omega_{\min}", note="the least energy")
         d.mistake("fastest", "least_for_greatest", letters[low])
         d.mistake("slowest", "least_for_greatest", letters[high])
     dA = d.step("dA", swing, "mm^2", symbol=r"\Delta A", formula=rf"@E_{letters[high]} - @E_{letters[low]}",
