@@ -119,3 +119,15 @@ def test_the_crossings_of_greatest_and_least_speed_read_as_a_sentence(bank):
                             m="36 kg", k="150 mm")
     lines = [f"{latex_to_unicode(variant.step(n).symbol)} = {variant.step(n).value}" for n in ("fastest", "slowest")]
     assert lines == ["crossing of ωₘₐₓ = B", "crossing of ωₘᵢₙ = E"]   # Example 3.1: B and E
+
+
+def test_the_proell_figure_names_the_points_the_statement_names(bank):
+    """The statement speaks of the extension AB, the cranked lever ABC and the upper arm BD: the figure marks them."""
+    from exgen.figures import figure_svg
+    from exgen.variant import make_variant
+    from svg_helpers import texts
+
+    for seed in range(5):
+        variant = make_variant(bank.get("governors.proell_extension"), seed)
+        assert all(word in variant.statement for word in ("AB", "ABC", "BD"))
+        assert {"A", "B", "C", "D"} <= set(texts(figure_svg(variant)))

@@ -170,8 +170,24 @@ def _offset_labels(variant) -> tuple[str, str]:
     return (e_u.value_text if e_u and e_u.si > 0 else ""), (e_l.value_text if e_l and e_l.si > 0 else "")
 
 
+def _point_letters(drawing: Drawing, ox: float, where: dict, side: int = -1) -> None:
+    """The points the statement names on one side of a Proell governor: the ball A on the extension AB of
+    the lower arm BC, the upper arm BD from its pivot D (Example 4.2's figure)."""
+    bx, by = where["ball"]
+    points = (("A", (ox + side * bx, by), BALL), ("B", (ox + side * where["rj"], where["joint_y"]), PIVOT),
+              ("C", (ox + side * where["el"], where["sleeve_y"]), PIVOT), ("D", (ox + side * where["eu"], where["top"]), PIVOT))
+    out, back = ("end", "start") if side < 0 else ("start", "end")
+    for letter, (x, y), radius in points:
+        d = radius + 5
+        near = [((x + side * d, y - d + 2), out), ((x + side * d, y + d + 9), out), ((x, y - d - 3), "middle"),
+                ((x - side * d, y - d + 2), back), ((x, y + d + 13), "middle"), ((x - side * d, y + d + 9), back)]
+        if letter == "C":  # beside the sleeve, level with its pivot, rather than on the sleeve or its load
+            near.insert(0, ((ox + side * (where["half"] + 5), y + 4), out))
+        drawing.place(near, letter, cls="point")
+
+
 def _two_positions(variant, positions: list[Position], radius_labels: list[str], title: str,
-                   load: str = "", extension_label: str = "") -> str:
+                   load: str = "", extension_label: str = "", letters: bool = False) -> str:
     linkage = _porter_linkage(variant)
     scale = _scale(positions, VIEW_W if len(positions) == 1 else TWO_VIEW_W)
     drawing = Drawing()
@@ -195,6 +211,8 @@ def _two_positions(variant, positions: list[Position], radius_labels: list[str],
             if load:
                 _load_label(drawing, ox, where, load)
         _radius_dimension(drawing, ox, where, radius, to_ball=not extension_label, side=-1 if k == 0 else 1)
+        if letters:
+            _point_letters(drawing, ox, where, side=-1 if k == 0 else 1)
         origins.append(ox)
     bottom = drawing.box[3] + 20
     for ox, at in zip(origins, positions):
@@ -296,7 +314,7 @@ def proell_mid(variant) -> str:
     r, ext = need(variant, "r"), need(variant, "AB")
     at = _porter_position(linkage, r.si, "mid position", extension=ext.si)
     return _two_positions(variant, [at], [r.label("r")], "Proell governor in mid position",
-                          load=_label(shown(variant, "M")), extension_label=ext.label("AB"))
+                          load=_label(shown(variant, "M")), extension_label=ext.label("AB"), letters=True)
 
 
 def proell_radii(variant) -> str:
