@@ -131,3 +131,19 @@ def test_the_proell_figure_names_the_points_the_statement_names(bank):
         variant = make_variant(bank.get("governors.proell_extension"), seed)
         assert all(word in variant.statement for word in ("AB", "ABC", "BD"))
         assert {"A", "B", "C", "D"} <= set(texts(figure_svg(variant)))
+
+
+def test_a_negative_acceleration_is_said_to_slow_the_flywheel(bank):
+    _, variant, _ = answers(bank, "flywheels.turning_moment_equation", T0="12500 N*m", b="2500 N*m", c="1900 N*m",
+                            n=4, N="110 rpm", band="0.5 %", theta="135 deg")
+    assert variant.answers["c"].value < 0 and "slowing" in _note(variant, "alpha")
+    _, variant, _ = answers(bank, "flywheels.turning_moment_equation", T0="14500 N*m", b="2300 N*m", c="-1900 N*m",
+                            n=2, N="150 rpm", band="0.5 %", theta="30 deg")    # Problem 3.2
+    assert variant.answers["c"].value > 0 and "speeding up" in _note(variant, "alpha")
+
+
+def test_the_change_of_spring_load_is_asked_as_a_size(bank):
+    """Part (d) asks which way: part (c) asks the size, so that a signed −737.5 N is a sign slip, said as one."""
+    from exgen.variant import make_variant
+
+    assert "size" in make_variant(bank.get("governors.spring_controlled"), 0).asks["c"]

@@ -69,7 +69,8 @@ def turning_moment_equation(p, d):
                     formula=rf"@b \sin({n}\,@theta) + @c \cos({n}\,@theta)",
                     note="the torque left over to accelerate the flywheel")
     d.require(abs(excess) >= 0.05 * math.hypot(p.b, p.c), "the crank angle is too near a crossing")
-    d.step("alpha", excess / inertia, "rad/s^2", symbol=r"\alpha", formula=r"\frac{@T_ex}{@I}")
+    d.step("alpha", excess / inertia, "rad/s^2", symbol=r"\alpha", formula=r"\frac{@T_ex}{@I}",
+           note="positive: the flywheel is speeding up" if excess > 0 else "negative: the flywheel is slowing down")
     degrees = math.degrees(p.theta)
     d.mistake("alpha", "degrees_as_radians", (p.b * math.sin(n * degrees) + p.c * math.cos(n * degrees)) / inertia)
     d.mistake("alpha", "total_torque", (excess + p.T0) / inertia)
