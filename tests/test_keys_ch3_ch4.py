@@ -147,3 +147,15 @@ def test_the_change_of_spring_load_is_asked_as_a_size(bank):
     from exgen.variant import make_variant
 
     assert "size" in make_variant(bank.get("governors.spring_controlled"), 0).asks["c"]
+
+
+def test_a_second_hartnell_spring_is_a_spring(bank):
+    """Example 4.3's spring 2 is 1158 kN/m, stiff because the sleeve's first few millimetres stretch it; the
+    drawn ones stay within about three times that, not a solid bar of 16 MN/m."""
+    from exgen.variant import make_variant
+
+    template = bank.get("governors.hartnell_two_springs")
+    for seed in range(150):
+        variant = make_variant(template, seed)
+        assert 100 <= variant.answers["b"].value <= 3000, seed          # kN/m
+        assert variant.answers["a"].value <= 5000, seed                  # N
