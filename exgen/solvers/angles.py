@@ -46,3 +46,14 @@ def between(d, name: str, symbol: str, expression: str, value: float, note: str)
     shift = f" - {360 * turns}^\\circ" if turns > 0 else (f" + {-360 * turns}^\\circ" if turns < 0 else "")
     formula = f"{expression}{shift}" if reduced >= 0 else f"-({expression}{shift})"
     return d.step(name, abs(reduced), "rad", symbol=symbol, formula=formula, note=note)
+
+
+def wrapped(d, name: str, symbol: str, expression: str, value: float, note: str = "") -> float:
+    """The step `name`: a direction worked as a sum of angles (`expression`, LaTeX with @names, worth
+    `value` rad), kept in (-180°, 180°] with the whole turn that takes it there written in the formula,
+    so the line's arithmetic gives the value shown."""
+    kept = math.remainder(value, 2 * math.pi)
+    kept = math.pi if kept == -math.pi else kept
+    turns = round((value - kept) / (2 * math.pi))
+    shift = f" - {360 * turns}^\\circ" if turns > 0 else (f" + {-360 * turns}^\\circ" if turns < 0 else "")
+    return d.step(name, kept, "rad", symbol=symbol, formula=expression + shift, note=note)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..mechanics import linkages as lk
-from .angles import difference, direction
+from .angles import difference, direction, wrapped
 from .polygons import angle_gap_deg
 
 #: The transmission angle is kept in this window: nearer a dead point the answers turn on the
@@ -99,10 +99,9 @@ def coupler_point(p, d):
                  formula=r"\cos^{-1}\frac{@r_H^2 + @L4^2 - @L3^2}{2\,@L4\,@r_H}",
                  note="the angle BDC in triangle DBC (cosine law)")
     turn = 1.0 if circuit == 2 else -1.0
-    theta4 = d.step("theta4", lk.wrap(theta_h + turn * phi), "rad", symbol=r"\theta_4",
-                    formula=rf"@theta_H {'+' if turn > 0 else '-'} @phi",
-                    note=f"circuit {circuit}: C on the {'right' if circuit == 2 else 'left'} of B → D, "
-                         f"{'counter-' if turn > 0 else ''}clockwise from D → B")
+    theta4 = wrapped(d, "theta4", r"\theta_4", rf"@theta_H {'+' if turn > 0 else '-'} @phi", theta_h + turn * phi,
+                     note=f"circuit {circuit}: C on the {'right' if circuit == 2 else 'left'} of B → D, "
+                          f"{'counter-' if turn > 0 else ''}clockwise from D → B")
     xc = d.step("xC", p.L4 * math.cos(theta4), "m", symbol="x_C", formula=r"@L4\cos @theta4")
     yc = d.step("yC", p.L4 * math.sin(theta4), "m", symbol="y_C", formula=r"@L4\sin @theta4")
     theta3 = direction(d, "theta3", r"\theta_3", "@yC - @yB", "@xC - @xB", yc - yb, xc - xb,
@@ -112,9 +111,9 @@ def coupler_point(p, d):
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",
                    note="the angle BCP of the coupler triangle (cosine law)")
     right = str(p.side) == "right"
-    theta6 = d.step("theta6", lk.wrap(theta3 + math.pi + (alpha if right else -alpha)), "rad", symbol=r"\theta_6",
-                    formula=rf"@theta3 + 180^\circ {'+' if right else '-'} @alpha",
-                    note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
+    theta6 = wrapped(d, "theta6", r"\theta_6", rf"@theta3 + 180^\circ {'+' if right else '-'} @alpha",
+                     theta3 + math.pi + (alpha if right else -alpha),
+                     note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
                          + ("counter-clockwise (P on the right of B → C)" if right else "clockwise (P on the left of B → C)"))
     xp = d.step("xP", xc + p.CP * math.cos(theta6), "m", symbol="x_P", formula=r"@xC + @CP\cos @theta6",
                 note="$R_P = R_4 + R_6$")

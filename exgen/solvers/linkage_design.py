@@ -13,7 +13,7 @@ import math
 
 from ..mechanics import linkages as lk
 from .fourbars import GRASHOF_REASON
-from .angles import difference, direction
+from .angles import difference, direction, wrapped
 from .polygons import angle_gap_deg
 
 SENSES = ("clockwise", "counter-clockwise")
@@ -37,8 +37,8 @@ def actuator_swing(p, d):
         angle = d.step(f"angle{k}", lk.actuator_link_angle(ao, p.r, getattr(p, length)), "rad",
                        symbol=rf"\angle OAB_{k}", formula=rf"\cos^{{-1}}\frac{{@AO^2 + @r^2 - @{length}^2}}{{2\,@AO\,@r}}",
                        note=f"in triangle OAB with the actuator {'as drawn' if k == 1 else 'retracted'} (cosine law)")
-        angles[k] = d.step(f"theta{k}", lk.wrap(beta + turn * angle), "rad", symbol=rf"\theta_{k}",
-                           formula=rf"@beta {sign} @angle{k}", note=f"B on the {p.side} of the line from A to O")
+        angles[k] = wrapped(d, f"theta{k}", rf"\theta_{k}", rf"@beta {sign} @angle{k}", beta + turn * angle,
+                            note=f"B on the {p.side} of the line from A to O")
         d.mistake(f"theta{k}", "other_side", lk.wrap(beta - turn * angle))
         d.mistake(f"theta{k}", "interior_angle", angle)
         d.require(math.radians(25) <= angle <= math.radians(155), "the actuator nearly in line with the link")

@@ -11,7 +11,7 @@ import math
 
 from ..mechanics import linkages as lk
 from ..mechanics.slider_cranks import slider_crank as solve_slider
-from .angles import between
+from .angles import between, wrapped
 
 SLIDE_OF = {"right": "horizontal", "left": "horizontal", "below": "vertical", "above": "vertical"}
 OTHER = {"right": "left", "left": "right", "below": "above", "above": "below"}
@@ -50,8 +50,7 @@ def slider_crank(p, d):
     formula, note = THETA3[slide]
     theta3 = d.step("theta3", position.theta3, "rad", symbol=r"\theta_3", formula=formula, note=note)
     formula, note = DIRECTION[where]
-    phi3 = d.step("phi3", lk.wrap(_direction(where, theta3)), "rad", symbol=r"\varphi_3", formula=formula,
-                  note=f"the coupler B → C from +x, {note}")
+    phi3 = wrapped(d, "phi3", r"\varphi_3", formula, _direction(where, theta3), note=f"the coupler B → C from +x, {note}")
     formula, note = L4[where]
     l4 = d.step("L4", _distance(where, p.L2, p.L3, p.theta2, _from_direction(where, phi3)), "m", symbol="L_4",
                 formula=formula, note=f"{note}, along the line of slide")
