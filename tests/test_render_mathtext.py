@@ -165,6 +165,7 @@ def test_text_with_math_for_each_output(text, typst_out, markdown_out, plain_out
     (r"\frac{a}{b} + c", "a/b + c"),
     (r"\frac{1}{2} \times 3", "1/2 × 3"),
     (r"\frac{1}{2}3", "(1/2)3"),
+    (r"\angle OAB_1", "∠OAB₁"),   # the actuator's key: the angle in triangle OAB
 ])
 def test_latex_to_unicode(latex, expected):
     assert latex_to_unicode(latex) == expected

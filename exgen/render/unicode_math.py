@@ -21,6 +21,7 @@ SYMBOLS = {
     "neq": "≠", "approx": "≈", "infty": "∞", "circ": "°", "degree": "°", "to": "→", "rightarrow": "→",
     "lceil": "⌈", "rceil": "⌉", "lfloor": "⌊", "rfloor": "⌋", "%": "%", "$": "$", "{": "{", "}": "}",
     "_": "_", "#": "#", "&": "&", "ldots": "…", "dots": "…", "cdots": "⋯", "partial": "∂", "sum": "Σ",
+    "angle": "∠",
 }
 #: A fraction of small whole numbers written as one character where a factor follows it: ½I, not 1/2I.
 VULGAR = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"): "¼", ("3", "4"): "¾"}
