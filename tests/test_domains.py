@@ -100,3 +100,26 @@ def test_a_bad_domain_names_the_file_and_line(tmp_path, domain, message):
     with pytest.raises(BankError) as caught:
         load_template(path)
     assert message in str(caught.value) and f"{path}:6" in str(caught.value)
+
+
+def _solve_json(capsys, template, settings):
+    argv = ["solve", template, "--json"] + [a for s in settings.split() for a in ("--set", s)]
+    assert main(argv) == 0, capsys.readouterr().err
+    import json
+    return json.loads(capsys.readouterr().out)
+
+
+SHAFT = "m1=2kg r1=40mm theta1=90deg m2=1kg r2=50mm theta2=0deg m3=1kg r3=50mm theta3=180deg rP=30mm rQ=20mm"
+
+
+def test_positions_along_a_shaft_may_lie_either_side_of_the_reference(capsys):
+    """A plane on the other side of the reference was refused ('z1 must not be negative'), so a problem given
+    from plane P, as the textbook's tables give it, could not be solved as printed."""
+    from_p = _solve_json(capsys, "balancing.two_plane_balance", SHAFT + " z1=-1.2m zP=0m z2=1.2m z3=2m zQ=2.4m")
+    from_end = _solve_json(capsys, "balancing.two_plane_balance", SHAFT + " z1=0m zP=1.2m z2=2.4m z3=3.2m zQ=3.6m")
+    assert [p["text"] for p in from_p["parts"].values()] == [p["text"] for p in from_end["parts"].values()] \
+        == ["2.167 kg at 67.38°", "4.038 kg at 262.1°"]
+    masses = ("m1=3kg r1=50mm theta1=0deg m2=2kg r2=60mm theta2=120deg m3=2kg r3=40mm theta3=240deg "
+              "B1=3kg b1=150mm bX=150mm")
+    assert _solve_json(capsys, "balancing.correction_plane_position", masses + " z1=-0.3m z2=1.2m z3=2m")["parts"]
+
