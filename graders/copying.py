@@ -18,8 +18,11 @@ from exgen.assignment import Assignment, build_sheet
 from exgen.errors import ExgenError
 
 from .answers import read_submission
+from .echo import shown
 from .results import GRADED, PROBLEM_FILE, WRONG, BatchResult
 
+#: What a student typed, quoted in the evidence: one line, this long at most, nothing that hides or reorders text.
+QUOTED = 60
 #: A pair is a sign when this many parts give evidence.
 MIN_PARTS = 2
 #: An answer is distinctive when at most this many students' keys (or wrong answers) share it.
@@ -75,7 +78,7 @@ def _answers(batch, keys) -> dict[tuple[str, str], dict[str, tuple[Any, str]]]:
                     value = answer_type(spec).read(part.given, spec).value
                 except (ExgenError, ValueError, ArithmeticError, TypeError):
                     continue
-                out[(question.slot, part.part_id)][sheet.student.id] = (value, part.given)
+                out[(question.slot, part.part_id)][sheet.student.id] = (value, shown(part.given, QUOTED))
     return out
 
 
@@ -115,7 +118,7 @@ def _other_variant(answers, keys) -> list[dict]:
                 continue
             for owner in owners:
                 evidence[(student, owner)].append(
-                    f"{slot} ({part_id}): {typed.strip()!s} is {owner}'s answer "
+                    f"{slot} ({part_id}): {typed} is {owner}'s answer "
                     f"({_text(spec, per_student[owner][0])}); {student}'s is {_text(spec, per_student[student][0])}")
     return [{"kind": OTHER_VARIANT, "students": [a, b], "strength": len(found),
              "summary": f"{a} handed in {len(found)} answers that are wrong for {a}'s sheet and right for {b}'s",
@@ -148,7 +151,7 @@ def _identical_wrong(answers) -> list[dict]:
         for students in groups.values():
             if 2 <= len(students) <= MAX_SHARED:
                 a, b = sorted(students)
-                evidence[(a, b)].append(f"{slot} ({part_id}): both answered {wrong[a][1].strip()}")
+                evidence[(a, b)].append(f"{slot} ({part_id}): both answered {wrong[a][1]}")
     return [{"kind": IDENTICAL_WRONG, "students": [a, b], "strength": len(found),
              "summary": f"{a} and {b} gave the same {len(found)} wrong answers, though their numbers differ",
              "evidence": found}
@@ -171,10 +174,11 @@ def _other_code(batch, codes: dict[str, str]) -> list[dict]:
             continue
         owner = whose.get(_code(code), "")
         students = [sheet.student.id] + ([owner] if owner else [])
+        code = shown(code, QUOTED, word=20)
         out.append({"kind": OTHER_CODE, "students": students, "strength": 10,
                     "summary": f"{sheet.student.id}'s file carries the sheet code {code}, "
                                + (f"which is {owner}'s" if owner else "which is no one's sheet"),
-                    "evidence": [f"{sheet.path.name}: code {code}; {sheet.student.id}'s sheet has {own}"]})
+                    "evidence": [f"{shown(sheet.path.name, QUOTED)}: code {code}; {sheet.student.id}'s sheet has {own}"]})
     return out
 
 

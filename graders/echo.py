@@ -9,6 +9,8 @@ import unicodedata
 #: private use, unassigned, and line or paragraph separators.
 _DROPPED = {"Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp"}
 ELLIPSIS = "\u2026"
+#: Characters a Markdown code span (a backtick) or HTML (a tag) would read as syntax, swapped for look-alikes.
+LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 
 
 def shown(text, limit: int = 80, word: int | None = None) -> str:
@@ -23,3 +25,9 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
     cleaned = "".join(" " if unicodedata.category(c) in _DROPPED else c for c in text)
     cleaned = " ".join(cleaned.split())
     return cleaned if len(cleaned) <= limit else cleaned[: limit - 1].rstrip() + ELLIPSIS
+
+
+def shown_code(text, limit: int = 80) -> str:
+    """`shown` text safe inside a Markdown code span, and as HTML should the page be converted: no
+    backticks or tags (look-alikes instead), never empty (an empty code span is not one)."""
+    return shown(text, limit).translate(LOOK_ALIKES) or " "

@@ -9,7 +9,7 @@ import jinja2
 
 from .analysis import LOW_DISCRIMINATION, analyse
 from .charts import facility_svg, histogram_svg
-from .echo import shown
+from .echo import shown, shown_code
 from .gradebooks import points
 from .record import read_record
 
@@ -29,12 +29,25 @@ def _md(text) -> str:
     return shown(str(text), 400).translate(_MD_SPECIAL)
 
 
+def _clean(value):
+    """Every text of a record as one line without control or bidi characters: results.json may come
+    from anywhere (an older exgen, an edit by hand) and quotes what students typed and named their files."""
+    if isinstance(value, str):
+        return shown(value, 2000)
+    if isinstance(value, list):
+        return [_clean(v) for v in value]
+    if isinstance(value, dict):
+        return {k: _clean(v) for k, v in value.items()}
+    return value
+
+
 def report_pages(record: dict) -> dict[str, str]:
-    analysis = analyse(record)
+    analysis = analyse(_clean(record))
     common = {"a": analysis, "points": points, "low": LOW_DISCRIMINATION}
     html = _environment(True).get_template("analysis.html.j2").render(
         common, histogram=histogram_svg(analysis), facility=facility_svg(analysis))
-    markdown = _environment(False).get_template("analysis.md.j2").render(common, md=_md)
+    markdown = _environment(False).get_template("analysis.md.j2").render(
+        common, md=_md, code=lambda text: shown_code(text, 300))
     return {HTML: html, MARKDOWN: markdown}
 
 

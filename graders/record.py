@@ -7,10 +7,14 @@ from pathlib import Path
 
 from exgen.errors import ExgenError
 
+from .echo import shown
 from .results import BatchResult
 
 RESULTS = "results.json"
 FORMAT = 1
+#: What a student typed, and the names of files they handed in, as kept here: one line, capped, with no
+#: control or bidi characters (other programs read this file and show what it says).
+GIVEN_LENGTH, PATH_LENGTH = 200, 300
 
 
 def batch_record(batch: BatchResult, signs: list[dict] | tuple = ()) -> dict:
@@ -28,16 +32,22 @@ def batch_record(batch: BatchResult, signs: list[dict] | tuple = ()) -> dict:
         sheets.append({
             "student": {"id": s.id, "name": s.name, "email": s.email, "section": s.section},
             "status": sheet.status, "points": sheet.points, "max_points": sheet.max_points, "code": sheet.code,
-            "code_mismatch": sheet.code_mismatch, "file": str(sheet.path) if sheet.path else "",
+            "code_mismatch": sheet.code_mismatch, "file": _path(sheet.path),
             "parts": [{"slot": q.slot, "part": p.part_id, "status": p.status, "points": p.points,
-                       "max_points": p.max_points, "given": p.given, "expected": p.expected, "mistake": p.mistake}
+                       "max_points": p.max_points, "given": shown(p.given, GIVEN_LENGTH), "expected": p.expected,
+                       "mistake": p.mistake}
                       for q in sheet.questions for p in q.parts],
         })
     return {"format": FORMAT,
             "assignment": {"id": batch.assignment.id, "title": batch.assignment.title, "course": batch.assignment.course},
             "max_points": batch.max_points, "columns": columns, "sheets": sheets,
-            "problems": [{"path": str(p.path), "reason": p.reason, "student": p.student} for p in batch.problems],
+            "problems": [{"path": _path(p.path), "reason": shown(p.reason, 1000), "student": p.student}
+                         for p in batch.problems],
             "warnings": list(batch.warnings), "signs": list(signs)}
+
+
+def _path(path: Path | None) -> str:
+    return shown(str(path), PATH_LENGTH) if path else ""
 
 
 def write_record(record: dict, path: Path) -> None:

@@ -13,7 +13,7 @@ from pathlib import Path
 from exgen.outdir import check_target, replacing
 from exgen.render.unicode_math import text_to_plain
 
-from .echo import shown
+from .echo import LOOK_ALIKES, shown, shown_code
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
                       SheetResult)
 
@@ -26,7 +26,6 @@ QUOTED_WORD = 48
 #: Notes shown on one feedback page; the rest are counted.
 NOTES_SHOWN = 10
 COMMON_MISTAKES = 3
-_LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _ENTITY = re.compile(r"&(?=#?\w+;)")  # "&lt;" typed as text would show as "<" in HTML
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
 KIND = "grade"  # the marker a folder of grading results carries (exgen.outdir)
@@ -125,7 +124,7 @@ def _part_block(part: PartResult) -> list[str]:
 
 def _shown(text: str, limit: int = SHOWN_ANSWER_LENGTH) -> str:
     """A student's text, safe inside a Markdown code span and as HTML: one line, short, no backticks or tags."""
-    return shown(text, limit).translate(_LOOK_ALIKES) or " "
+    return shown_code(text, limit)
 
 
 def _where(path: Path, base: Path | None) -> str:
@@ -139,7 +138,7 @@ def _escape(text: str, limit: int = MESSAGE_LENGTH) -> str:
     """Any text on a page (messages quote what students typed): its math in plain Unicode, one line,
     capped, and harmless as Markdown and as HTML without writing entities a reader of the file would
     see (the page shows ‹stream end›, not &lt;stream end&gt;)."""
-    text = shown(text_to_plain(str(text)), limit, word=QUOTED_WORD).translate(_LOOK_ALIKES)
+    text = shown(text_to_plain(str(text)), limit, word=QUOTED_WORD).translate(LOOK_ALIKES)
     return _ENTITY.sub("\uff06", text)
 
 

@@ -18,8 +18,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from exgen.errors import ExgenError
+from graders.echo import shown
 
 DB_ENV = "EXGEN_PRACTICE_DB"
+#: An answer as kept (and shown again in its box): one line, capped, with no control or bidi characters.
+STORED_ANSWER = 200
 SCHEMA_VERSION = 1
 BUSY_SECONDS = 5.0  # how long a write waits for another writer before giving up
 SCHEMA = """
@@ -217,7 +220,8 @@ class Store:
         with self.transaction() as db:
             since = db.execute("SELECT max(at) FROM checks WHERE problem = ?", (problem,)).fetchone()[0] or \
                 db.execute("SELECT served FROM problems WHERE id = ?", (problem,)).fetchone()[0]
-            row = CheckRow(problem, part, answer, status, mistake, message, max(0.0, now - since), now)
+            row = CheckRow(problem, part, shown(answer, STORED_ANSWER), status, mistake, message,
+                           max(0.0, now - since), now)
             db.execute("INSERT INTO checks (problem, part, answer, status, mistake, message, seconds, at) "
                        "VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
                        (row.problem, row.part, row.answer, row.status, row.mistake, row.message, row.seconds, row.at))
