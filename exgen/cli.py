@@ -297,39 +297,70 @@ def _progress_options(p) -> None:
 
     p.add_argument("--db", default=str(default_path()), metavar="FILE",
                    help="the progress file (SQLite; where it is by default: below)")
-    p.epilog = f"Your progress is kept in:\n  {default_path()}\n(--db FILE or $EXGEN_PRACTICE_DB sets another file)"
-    p.formatter_class = argparse.RawDescriptionHelpFormatter
+    p.epilog = (f"Your progress is kept in:\n  {default_path()}\n(--db FILE or $EXGEN_PRACTICE_DB sets another file)"
+                + (f"\n\n{p.epilog}" if p.epilog else ""))
     p.add_argument("--assignment", metavar="A.yaml",
                    help="practise only this assignment's templates (with fresh numbers, never a sheet's)")
 
 
+def _examples(*commands: str) -> str:
+    return ("example:\n" if len(commands) == 1 else "examples:\n") + "\n".join(f"  {c}" for c in commands)
+
+
+def _command(sub, name: str, summary: str, description: str, *examples: str) -> argparse.ArgumentParser:
+    """A subcommand whose --help says what it does and shows it done (its description is wrapped by hand)."""
+    return sub.add_parser(name, help=summary, description=description, epilog=_examples(*examples),
+                          formatter_class=argparse.RawDescriptionHelpFormatter)
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
-        prog="exgen", description="Unique, gradeable Mechanics of Machines problems: sheets, keys, grading.")
+        prog="exgen", formatter_class=argparse.RawDescriptionHelpFormatter,
+        description="Unique, gradeable Mechanics of Machines problems: a tutorial sheet, answer file and key for\n"
+                    "every student, grading of the answer files handed back, practice alone, pools for Moodle,\n"
+                    "QTI 2.1 and Canvas.",
+        epilog=_examples("exgen generate examples/tutorial1.yaml --out out/tutorial1",
+                         "exgen grade out/tutorial1 submissions/ --out graded/tutorial1")
+        + "\n\n`exgen COMMAND --help` says what each command does, with an example.")
     parser.add_argument("--version", action="version", version=f"exgen {__version__}")
     parser.add_argument("--bank", action="append", default=[], metavar="DIR",
                         help="an extra folder of templates (repeatable; also $EXGEN_BANKS)")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    p = sub.add_parser("list", help="list the templates")
-    p.add_argument("--chapter", type=int, help="only this chapter")
+    p = _command(sub, "list", "list the templates",
+                 "List the templates (the kinds of problem), each with the textbook example or problem it follows.",
+                 "exgen list --chapter 2")
+    p.add_argument("--chapter", type=int, metavar="N", help="only chapter N (1-7)")
     p.set_defaults(func=cmd_list)
 
-    p = sub.add_parser("show", help="draw one variant of a template and print it")
-    p.add_argument("id")
+    p = _command(sub, "show", "draw one variant of a template and print it",
+                 "Draw one variant of a template and print it as a student would see it; --key adds the answers\n"
+                 "and the worked solution. The same seed always gives the same variant.",
+                 "exgen show belts.flat_belt_power --seed 7 --key")
+    p.add_argument("id", help="a template id, as `exgen list` prints it")
     p.add_argument("--seed", type=_count(0, SEED_MAX), help="the variant's seed, 0 to 2^65-1 (default: a fresh one)")
     p.add_argument("--key", action="store_true", help="also print the answers and worked solution")
     p.set_defaults(func=cmd_show)
 
-    p = sub.add_parser("solve", help="solve a template for values you give")
-    p.add_argument("id")
+    p = _command(sub, "solve", "solve a template for values you give",
+                 "Solve a template for values you give, e.g. to check a textbook problem: every parameter as\n"
+                 "--set NAME=VALUE, with its unit (a bare number is read in the template's unit). Run it with\n"
+                 "none to be told each parameter's name, meaning and unit.",
+                 "exgen solve gears.gear_pair_power --set m=4mm --set t1=20 --set t2=60 --set tau1=100N*m \\\n"
+                 "      --set N1=1000rpm --set eta=96% --steps")
+    p.add_argument("id", help="a template id, as `exgen list` prints it")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="a given value with its unit, e.g. --set d1=600mm (repeat for each parameter)")
     p.add_argument("--json", action="store_true", help="print every part's value and unit as JSON")
     p.add_argument("--steps", action="store_true", help="print the worked solution")
     p.set_defaults(func=cmd_solve)
 
-    p = sub.add_parser("generate", help="a sheet, answer form and key for every student on a roster")
+    p = _command(sub, "generate", "a sheet, answer form and key for every student on a roster",
+                 "Issue an assignment: for every student on the roster a tutorial sheet (PDF and Markdown, with\n"
+                 "figures) and an answer file to fill in, in OUT/students/ID/, and a key with worked solutions in\n"
+                 "OUT/keys/ID/; OUT/manifest.json records what was issued, for grading. The roster and the course\n"
+                 "secret come from the assignment file unless given here; the first run creates the secret.",
+                 "exgen generate examples/tutorial1.yaml --out out/tutorial1 --print")
     p.add_argument("assignment", help="the assignment file (YAML)")
     p.add_argument("--roster", help="class list CSV with an id column (name, email optional)")
     p.add_argument("--out", required=True, help="output folder")
@@ -341,7 +372,12 @@ def build_parser() -> argparse.ArgumentParser:
                                                         "print/keys.pdf, every key")
     p.set_defaults(func=cmd_generate)
 
-    p = sub.add_parser("grade", help="grade a folder of returned answer files against what was issued")
+    p = _command(sub, "grade", "grade a folder of returned answer files against what was issued",
+                 "Grade the answer files students hand back, each against the sheet issued to its student (whose\n"
+                 "file it is, its name or folder says). Writes gradebook.csv (and gradebooks for Canvas and\n"
+                 "Moodle), feedback/ID.md for each student, report.md with every file not graded and why, and\n"
+                 "the item analysis. Stops before any mark if the secret or a template changed since issue.",
+                 "exgen grade out/tutorial1 submissions/ --out graded/tutorial1")
     p.add_argument("issued", help="the folder `exgen generate` wrote (its --out), or its manifest.json")
     p.add_argument("submissions", help="folder of answer files (YAML, JSON or CSV), one per student, named or "
                                        "foldered by student id as a learning system downloads them")
@@ -355,10 +391,11 @@ def build_parser() -> argparse.ArgumentParser:
                                                      "(without it, importing makes a new assignment)")
     p.set_defaults(func=cmd_grade)
 
-    p = sub.add_parser("practice", help="practise alone in the terminal: a problem at a time, checked as you go",
-                       description="Practise alone: fresh problems from where you are weakest, each part checked\n"
-                                   "as you answer it. At a prompt type an answer with its unit, or h (hint),\n"
-                                   "s (worked solution), n (next problem), q (quit).")
+    p = _command(sub, "practice", "practise alone in the terminal: a problem at a time, checked as you go",
+                 "Practise alone: fresh problems from where you are weakest, each part checked\n"
+                 "as you answer it. At a prompt type an answer with its unit, or h (hint),\n"
+                 "s (worked solution), n (next problem), q (quit).",
+                 "exgen practice --topic gears", "exgen practice --stats")
     which = p.add_mutually_exclusive_group()
     which.add_argument("--chapter", type=_count(1), help="only this chapter")
     which.add_argument("--topic", metavar="ID", help="only this topic (belts, gears, ...) or template id")
@@ -367,9 +404,10 @@ def build_parser() -> argparse.ArgumentParser:
     _progress_options(p)
     p.set_defaults(func=cmd_practice)
 
-    p = sub.add_parser("serve", help="practise in the browser: a local web app on this computer",
-                       description="Start the practice web app on this computer (nothing is fetched from the\n"
-                                   "internet) and print its address.")
+    p = _command(sub, "serve", "practise in the browser: a local web app on this computer",
+                 "Start the practice web app on this computer (nothing is fetched from the\n"
+                 "internet) and print its address.",
+                 "exgen serve --open", "exgen serve --assignment examples/tutorial2.yaml")
     p.add_argument("--host", default="127.0.0.1",
                    help="address to listen on (default %(default)s: only this computer can reach it)")
     p.add_argument("--port", type=_count(0, 65535), default=8000, help="port (default %(default)s; 0: any free one)")
@@ -377,12 +415,21 @@ def build_parser() -> argparse.ArgumentParser:
     _progress_options(p)
     p.set_defaults(func=cmd_serve)
 
-    p = sub.add_parser("report", help="item analysis of a grading run (HTML and Markdown)")
+    p = _command(sub, "report", "item analysis of a grading run (HTML and Markdown)",
+                 "Write the item analysis of a grading run again from its results.json: item-analysis.html\n"
+                 "(one self-contained page) and item-analysis.md, with the spread of marks, each part's facility\n"
+                 "and discrimination, the mistakes made, and signs of copying with their evidence.",
+                 "exgen report graded/tutorial1")
     p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
     p.add_argument("--out", help="where to write the pages (default: that folder)")
     p.set_defaults(func=cmd_report)
 
-    p = sub.add_parser("export", help="a pool of variants per question for a learning system (Moodle, QTI 2.1, Canvas)")
+    p = _command(sub, "export", "a pool of variants per question for a learning system (Moodle, QTI 2.1, Canvas)",
+                 "Write a question pool for a learning system: each question of an assignment (or each template\n"
+                 "named) drawn N times, with its tolerances, named mistakes, figures and worked solution. The\n"
+                 "system gives each student one variant of each question. How to import it: docs/lms.md.",
+                 "exgen export moodle examples/tutorial1.yaml --variants 50 --out tutorial1-moodle.xml",
+                 "exgen export canvas examples/tutorial1.yaml --variants 50 --out tutorial1-canvas.zip")
     p.add_argument("format", choices=("moodle", "qti", "canvas"), help="moodle: Moodle XML; qti: IMS QTI 2.1 package "
                                                                       "(zip); canvas: a QTI 1.2 zip for Canvas")
     p.add_argument("sources", nargs="+", metavar="SOURCE", help="an assignment file (its questions and points), or "
@@ -393,8 +440,12 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
     p.set_defaults(func=cmd_export)
 
-    p = sub.add_parser("validate", help="draw many variants of every template and check them")
-    p.add_argument("ids", nargs="*", help="only these templates")
+    p = _command(sub, "validate", "draw many variants of every template and check them",
+                 "Draw many variants of every template (or of those named) and check what must always hold: the\n"
+                 "constraints, finite answers of the kind asked, the key grading itself at 100 %, every named\n"
+                 "mistake recorded and worded. Prints, per template, how many draws were rejected and why.",
+                 "exgen validate belts.flat_belt_power gears.epicyclic --seeds 500")
+    p.add_argument("ids", nargs="*", metavar="ID", help="only these templates")
     p.add_argument("--seeds", type=_count(1), default=200, help="variants drawn per template (default 200)")
     p.set_defaults(func=cmd_validate)
     return parser
