@@ -8,9 +8,11 @@ problem), q (quit with a summary). End of input quits as q does.
 from __future__ import annotations
 
 import os
+import shlex
 import subprocess
 import sys
 import tempfile
+import textwrap
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, TextIO
@@ -59,9 +61,15 @@ class Terminal:
     def say(self, text: str = "") -> None:
         print(text, file=self.out, flush=True)
 
+    def tell(self, text: str, lead: str = "  ") -> None:
+        """A sentence or two (feedback, a hint, a note) wrapped to the page, continued under its first word."""
+        self.say(textwrap.fill(text, WIDTH, initial_indent=lead, subsequent_indent=lead + "  ",
+                               break_long_words=False, break_on_hyphens=False))
+
     def run(self) -> int:
         self.tally.topics = {k: r.mastery for k, r in self.practice.table("topic").items()}
-        self.say(f"Practising {self.practice.catalogue.label(self.scope)}. {HELP}")
+        self.say(f"Practising {self.practice.catalogue.label(self.scope)}.")
+        self.tell(HELP, lead="")
         with tempfile.TemporaryDirectory(prefix="exgen-practice-") as scratch:
             self._figures = self._figures or Path(scratch)
             while self.problem(self.practice.next_problem(self.scope)) != QUIT:
@@ -132,7 +140,7 @@ class Terminal:
                 solved = True
                 continue
             if command in ("?", "help"):
-                self.say(HELP)
+                self.tell(HELP)
                 continue
             if not text:
                 return "solution" if solved else "skipped"
@@ -145,14 +153,14 @@ class Terminal:
             if result.correct:
                 return "solution" if solved else "answered"
             if result.status == WRONG:
-                self.say("  Try again, or press Enter to go on (h for a hint, s for the worked solution).")
+                self.tell("Try again, or press Enter to go on (h for a hint, s for the worked solution).")
 
     def verdict(self, result) -> None:
         if result.status == CORRECT:
             self.say(f"  {VERDICTS[CORRECT]}")
             return
         lead = VERDICTS.get(result.status, "")
-        self.say(f"  {lead} {PLAIN.text(result.message)}".rstrip())
+        self.tell(f"{lead} {PLAIN.text(result.message)}".strip())
 
     def hint(self, problem: Problem, part_id: str) -> None:
         given = self.practice.next_hint(problem, part_id)
@@ -168,7 +176,7 @@ class Terminal:
             for line in line_text(hint.line, "    "):
                 self.say(line)
         else:
-            self.say(f"  Hint {level}: {PLAIN.text(hint.text)}")
+            self.tell(f"Hint {level}: {PLAIN.text(hint.text)}")
 
     def solution(self, problem: Problem) -> None:
         worked = self.practice.show_solution(problem)
@@ -201,6 +209,8 @@ class Terminal:
                 solved = True
             elif command in ("s", "solution"):
                 self.say("The worked solution is above.")
+            else:  # an answer typed once more, say: it would otherwise vanish without a word
+                self.tell("Every part of this problem is done; that was not read as an answer.", lead="")
 
     # ---- the summary ------------------------------------------------------------------------
 
@@ -214,7 +224,8 @@ class Terminal:
         for name in changed:
             before = t.topics.get(name, Mastery())
             self.say(f"  {name}: {_standing(before)} → {_standing(rows[name].mastery)}")
-        self.say(f"Progress is kept in {self.practice.store.path}; `exgen practice --stats` shows all of it.")
+        self.say(f"Progress is kept in {self.practice.store.path}; `{stats_command(self.practice.store.path)}` "
+                 "shows all of it.")
 
 
 def _ask(prompt: str) -> str:
@@ -227,6 +238,14 @@ def _ask(prompt: str) -> str:
 
 def _standing(estimate: Mastery) -> str:
     return "not started" if estimate.problems == 0 else f"{estimate.mean:.0%} ({estimate.level})"
+
+
+def stats_command(path: Path) -> str:
+    """The command that shows this progress file's table (naming the file unless it is the default)."""
+    from .store import default_path
+
+    same = Path(path).resolve() == Path(default_path()).resolve()
+    return "exgen practice --stats" + ("" if same else f" --db {shlex.quote(str(path))}")
 
 
 def stats_text(practice: Practice) -> str:

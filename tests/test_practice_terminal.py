@@ -2,6 +2,7 @@
 in one line."""
 import io
 import itertools
+import math
 import os
 import subprocess
 import sys
@@ -127,3 +128,26 @@ def test_the_default_progress_file_is_in_the_help(capsys, monkeypatch):
     with pytest.raises(SystemExit):
         main(["serve", "--help"])
     assert str(default_path()) in " ".join(capsys.readouterr().out.split())
+
+
+def test_feedback_fits_the_page_and_the_summary_names_the_progress_file_given(monkeypatch, capsys, tmp_path, bank,
+                                                                               seeds):
+    """A long message ran off an 80-column terminal mid-word, an answer typed once the problem was done
+    vanished without a word, and the summary offered `exgen practice --stats`, which shows another file's
+    progress when --db was given."""
+    from exgen.render.text import WIDTH
+
+    template = bank.get("belts.compound_drive")
+    variant = make_variant(template, seeds[0])
+    b = template.part("b")
+    slip = answer_type(b).text(variant.mistakes["b"]["slip_not_applied"], b)
+    in_rad_s = f"{variant.answers['a'].value * math.pi / 30:.4g}"  # rpm asked: its message is long
+    lines = [in_rad_s, variant.answers["a"].text, slip] + [variant.answers[p.id].text for p in template.parts[1:]]
+    lines += ["12 rpm", "q"]
+    db = tmp_path / "my progress.sqlite3"
+    code, out, err = run(monkeypatch, capsys, lines, "--topic", "belts.compound_drive", db=db)
+    assert code == 0, err
+    feedback = [line for line in out.splitlines() if line.startswith("  ") and not line.startswith("  (")]
+    assert any("Not right" in line for line in feedback) and all(len(line) <= WIDTH for line in feedback)
+    assert "that was not read as an answer" in out
+    assert f"`exgen practice --stats --db '{db}'` shows all of it" in out
