@@ -12,6 +12,9 @@ from pathlib import Path
 from . import __version__
 from .errors import ExgenError
 
+CLOSE_MISTAKE = "lands within"  # exgen.variant.mistakes_apart's warning, for values a user gave
+CLOSE_MISTAKE_MEANS = ("a mistake that close is marked right: for these values the grader cannot tell it from "
+                       "the answer; sheets never draw such values")
 SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.seeds.PRACTICE_SEEDS)
 
 
@@ -111,8 +114,11 @@ def cmd_solve(args) -> int:
 
     template = _bank(args).get(args.id)
     variant, warnings = solve(template, parse_settings(args.set))
+    close = [w for w in warnings if CLOSE_MISTAKE in w]
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
+        if close and warning is close[-1]:
+            print(f"  ({CLOSE_MISTAKE_MEANS})", file=sys.stderr)
     if args.json:
         print(json.dumps(solution_json(variant), indent=2, ensure_ascii=False))
         return 0

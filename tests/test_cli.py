@@ -156,3 +156,15 @@ def test_a_reader_that_closes_early_ends_the_command_quietly(argv):
         os.close(write_end)
     assert "Traceback" not in done.stderr and "Broken pipe" not in done.stderr and "Exception" not in done.stderr
     assert done.returncode == 141  # as a shell reports a process that SIGPIPE ended
+
+
+def test_solve_says_what_a_mistake_close_to_the_answer_means(capsys):
+    """'the mistake ... lands within 3 times 1 % of the answer' left a user of `exgen solve` guessing."""
+    argv = ["solve", "belts.flat_belt_power"] + [a for s in (
+        "d1=0.5m d2=1.2m X=3.6m N1=200rpm mu=0.3 rho=2812.5kg/m^3 A=320mm^2 E=300MN/m^2 sigma=6.25MPa").split()
+        for a in ("--set", s)]
+    assert main(argv) == 0
+    err = capsys.readouterr().err.splitlines()
+    close = [i for i, line in enumerate(err) if "lands within" in line]
+    assert close and err[close[-1] + 1] == "  (a mistake that close is marked right: for these values the grader " \
+        "cannot tell it from the answer; sheets never draw such values)"
