@@ -3,7 +3,7 @@ with the mouse and with the keyboard alone, on a desktop and a phone-width scree
 browser lays out; nothing is fetched from anywhere but the app.
 
 Skipped, saying why, only where no Chromium is installed (.ci/run installs it). With EXGEN_SCREENSHOTS
-set to a folder, the screenshots the README shows are written there.
+set to a folder, the screenshots docs/practice.md shows are written there.
 """
 import os
 import shutil
