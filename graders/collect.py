@@ -47,6 +47,8 @@ OTHER_STUDENT = "sits in {owner}'s place (its name or folder) but says `student:
 OTHER_CODE = "carries the sheet code {given}, but {owner}'s sheet has {code}{whose} (copied, or a mix-up?)"
 OTHER_ASSIGNMENT = "is for the assignment {given!r}, not {expected!r}"
 NO_CODE = "The answer file carries no sheet code; it was graded against your own sheet."
+NAMED_INSIDE = ("An answer file that names you inside, {files}, was not graded: its name and folder do not carry "
+                "your id (name it {id}.yaml, or put it in a folder named {id}). Ask your instructor.")
 DUPLICATE = "{student} handed in {count} files; graded the newest, {newest}"
 OLDER_FILE = "an older file from {student}; {newest} was graded instead"
 
@@ -123,6 +125,7 @@ def collect(directory: Path, roster: list[Student] | None = None, *, assignment:
     known = {s.id: s for s in roster} if roster is not None else None
     files, problems = answer_files(directory)
     found: dict[str, list[Entry]] = {}
+    claimed: dict[str, list[str]] = {}  # files no one's by their place that name a student inside
     for path in files:
         owner, why_not = whose(path.relative_to(directory), known)
         try:
@@ -133,6 +136,9 @@ def collect(directory: Path, roster: list[Student] | None = None, *, assignment:
             inside = (f" (it says `student: {shown(submission.student, 40)}` inside)" if submission and
                       submission.student else f" (and it cannot be read: {error})" if error else "")
             problems.append(FileProblem(path, why_not + inside))
+            claim = _on_roster(submission.student, known) if submission else ""
+            if claim:
+                claimed.setdefault(claim, []).append(shown(path.name, 60))
             continue
         refused = _refusal(owner, submission, assignment, codes) if submission is not None else ""
         if error or refused:
@@ -142,7 +148,8 @@ def collect(directory: Path, roster: list[Student] | None = None, *, assignment:
         found.setdefault(owner, []).append(Entry(student, path, submission, error, refused, notes))
     entries = [_chosen(files, problems) for files in found.values()]
     if known is not None:
-        entries += [Entry(s) for sid, s in known.items() if sid not in found]
+        entries += [Entry(s, notes=[NAMED_INSIDE.format(files=", ".join(claimed[sid]), id=sid)] if sid in claimed
+                          else []) for sid, s in known.items() if sid not in found]
         order = {sid: i for i, sid in enumerate(known)}
         entries.sort(key=lambda e: order[e.student.id])
     else:
@@ -165,6 +172,12 @@ def whose(relative: Path, known: dict[str, Student] | None) -> tuple[str, str]:
         if len(matches) > 1:
             return "", SEVERAL.format(students=", ".join(sorted(matches)[:5]))
     return "", WHOSE_FILE.format(of="on the roster")
+
+
+def _on_roster(given: str, known: dict[str, Student] | None) -> str:
+    """The roster id a file's `student:` names, or "" (only to tell that student, never to grade the file)."""
+    by_folded = {sid.casefold(): sid for sid in known or {}}
+    return by_folded.get(given.strip().casefold(), "")
 
 
 def _stem(name: str) -> str:

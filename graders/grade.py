@@ -132,8 +132,8 @@ def _with_progress(progress: Progress | None, entries: list) -> Iterable:
 def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float,
                  code: str | None = None) -> SheetResult:
     notes = tuple(entry.notes)
-    if entry.path is None:
-        return SheetResult(entry.student, NO_SUBMISSION, max_points, warnings=(NO_FILE,))
+    if entry.path is None:  # a note says why, when a file naming the student was found elsewhere
+        return SheetResult(entry.student, NO_SUBMISSION, max_points, warnings=notes or (NO_FILE,))
     if entry.submission is None:
         return SheetResult(entry.student, UNREADABLE_FILE, max_points,
                            warnings=notes + (UNREADABLE.format(reason=entry.error),), path=entry.path)

@@ -252,3 +252,18 @@ def test_every_file_is_graded_or_listed_with_why(issued, tmp_path, bank):
     assert set(reasons) == {"answers.pdf", "gradebook.csv", ".DS_Store", "README"}
     assert "not an answer file (.pdf)" in reasons["answers.pdf"] and "gradebook" in reasons["gradebook.csv"]
     assert "hidden" in reasons[".DS_Store"] and "no extension" in reasons["README"]
+
+
+def test_a_misnamed_file_is_told_to_the_student_it_names(issued, tmp_path, monkeypatch, capsys):
+    """A file named with a typo in the id ('A2103_tut1.csv', saying `student: A21003` inside) was listed in
+    the report, but A21003's own feedback said 'No answer file was handed in'."""
+    folder = tmp_path / "handed"
+    folder.mkdir()
+    (folder / "A2103_tut1.yaml").write_text(keyed(issued, "A21003"), encoding="utf-8")
+    assert grade_cli(monkeypatch, issued, folder, "--out", tmp_path / "g") == 0
+    feedback = (tmp_path / "g" / "feedback" / "A21003.md").read_text(encoding="utf-8")
+    assert "An answer file that names you inside, A2103_tut1.yaml, was not graded" in feedback
+    assert "name it A21003.yaml" in feedback and "No answer file was handed in" not in feedback
+    assert "No answer file was handed in" in (tmp_path / "g" / "feedback" / "A21005.md").read_text(encoding="utf-8")
+    gradebook = (tmp_path / "g" / "gradebook.csv").read_text(encoding="utf-8")
+    assert next(line for line in gradebook.splitlines() if line.startswith("A21003")).endswith(",no submission")
