@@ -15,6 +15,7 @@ from .errors import ExgenError
 CLOSE_MISTAKE = "lands within"  # exgen.variant.mistakes_apart's warning, for values a user gave
 CLOSE_MISTAKE_MEANS = ("a mistake that close is marked right: for these values the grader cannot tell it from "
                        "the answer; sheets never draw such values")
+EXPORT_SUFFIX = {"moodle": ".xml", "qti": ".zip", "canvas": ".zip"}
 SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.seeds.PRACTICE_SEEDS)
 
 
@@ -224,6 +225,9 @@ def cmd_export(args) -> int:
     from .export import writer
     from .export.pool import build_pool, notices
 
+    suffix = EXPORT_SUFFIX[args.format]
+    if Path(args.out).suffix.lower() != suffix:  # a .zip of Moodle XML would fail at import, after all the work
+        raise ExgenError(f"--out {args.out}: {args.format} writes a {suffix} file (e.g. --out pool-{args.format}{suffix})")
     bank = _bank(args)
     files = [s for s in args.sources if s.lower().endswith((".yaml", ".yml"))]
     if files and (len(files) > 1 or len(args.sources) > 1):

@@ -44,6 +44,9 @@ def test_export_canvas_says_what_it_leaves_out(tmp_path, capsys):
 @pytest.mark.parametrize("argv, message", [
     (["export", "moodle", "examples/tutorial1.yaml", "belts.flat_belt_power", "--out", "x.xml"], "not both"),
     (["export", "moodle", "no.such_template", "--out", "x.xml"], "no.such_template"),
+    # a Moodle XML pool written as tutorial1-moodle.zip, without a word, would fail only at Moodle's import
+    (["export", "moodle", "examples/tutorial1.yaml", "--out", "tutorial1-moodle.zip"], "moodle writes a .xml file"),
+    (["export", "canvas", "examples/tutorial1.yaml", "--out", "tutorial1.xml"], "canvas writes a .zip file"),
 ])
 def test_mistakes_are_one_line(argv, message, capsys):
     assert main(argv) == 1
