@@ -5,6 +5,8 @@ that names it, so the CLI can print it and exit without a traceback.
 """
 from __future__ import annotations
 
+import difflib
+
 
 class ExgenError(Exception):
     """Base class: an expected failure with a message meant for the user."""
@@ -31,7 +33,8 @@ class BankError(ExgenError, ValueError):
 class UnknownTemplate(ExgenError, KeyError):
     def __init__(self, template_id: str, known: list[str]):
         self.template_id = template_id
-        close = [k for k in known if template_id.split(".")[-1] in k][:5]
+        close = [k for k in known if template_id.split(".")[-1] in k][:5] or \
+            difflib.get_close_matches(template_id, known, n=3, cutoff=0.8)  # a typo: 'flat_belt_powr'
         hint = f" Did you mean: {', '.join(close)}?" if close else " Run `exgen list` to see them."
         super().__init__(f"no template with id {template_id!r}.{hint}")
 

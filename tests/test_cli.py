@@ -168,3 +168,12 @@ def test_solve_says_what_a_mistake_close_to_the_answer_means(capsys):
     close = [i for i, line in enumerate(err) if "lands within" in line]
     assert close and err[close[-1] + 1] == "  (a mistake that close is marked right: for these values the grader " \
         "cannot tell it from the answer; sheets never draw such values)"
+
+
+@pytest.mark.parametrize("typed, meant", [("belts.flat_belt_powr", "belts.flat_belt_power"),
+                                          ("gear.simple_trian", "gears.simple_train")])
+def test_a_mistyped_template_id_is_answered_with_the_one_meant(typed, meant, capsys):
+    """'belts.flat_belt_powr' got only 'Run `exgen list` to see them', though one letter was missing."""
+    assert main(["show", typed]) == 1
+    err = capsys.readouterr().err
+    assert f"Did you mean: {meant}" in err and err.count("\n") == 1
