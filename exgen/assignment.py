@@ -82,6 +82,8 @@ def load_assignment(path: Path, bank: Bank | None = None) -> Assignment:
     """Read an assignment file; with a bank, also check every template id exists."""
     try:
         data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise AssignmentError(path, "no such file") from None
     except (OSError, UnicodeDecodeError, yaml.YAMLError) as exc:
         raise AssignmentError(path, f"cannot read: {exc}") from exc
     if not isinstance(data, dict):
@@ -137,6 +139,8 @@ def load_roster(path: Path) -> list[Student]:
     """Students from a CSV with an `id` column (and optional name, email, section)."""
     try:
         text = path.read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        raise AssignmentError(path, "no such roster file") from None
     except (OSError, UnicodeDecodeError) as exc:
         raise AssignmentError(path, f"cannot read roster: {exc}") from exc
     reader = csv.DictReader(io.StringIO(text))

@@ -200,7 +200,8 @@ def cmd_grade(args) -> int:
     manifest = read_manifest(Path(args.issued))
     submissions = Path(args.submissions)
     if not submissions.is_dir():
-        raise ExgenError(f"{submissions}: not a folder of answer files")
+        raise ExgenError(f"{submissions}: no such folder" if not submissions.exists() else
+                         f"{submissions}: not a folder: give the folder holding the answer files")
     check_target(Path(args.out), "grade")  # before any work: a folder that cannot be replaced stops here
     bank = _bank(args)
     recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \

@@ -49,7 +49,7 @@ def test_solve_json_has_every_part_value_and_unit(capsys):
     (["show", "belts.nope"], "no template with id 'belts.nope'"),
     (["solve", "belts.flat_belt_power", "--set", "d1=0.5m"], "give a value for d2"),
     (["solve", "belts.flat_belt_power", *EXAMPLE_1_5, "--set", "d1=0.5kg"], "d1=0.5kg: 'kg' is a mass, but a length is asked"),
-    (["generate", str(EXAMPLES / "missing.yaml"), "--out", "x"], "missing.yaml: cannot read"),
+    (["generate", str(EXAMPLES / "missing.yaml"), "--out", "x"], "missing.yaml: no such file"),
 ])
 def test_user_errors_are_one_line_without_traceback(capsys, argv, message):
     assert main(argv) == 1
@@ -177,3 +177,15 @@ def test_a_mistyped_template_id_is_answered_with_the_one_meant(typed, meant, cap
     assert main(["show", typed]) == 1
     err = capsys.readouterr().err
     assert f"Did you mean: {meant}" in err and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["generate", "examples/no_such.yaml", "--out", "x"], "examples/no_such.yaml: no such file"),
+    (["generate", "examples/tutorial1.yaml", "--roster", "no_such.csv", "--out", "x"], "no_such.csv: no such roster file"),
+])
+def test_a_file_that_is_not_there_is_said_plainly(argv, message, capsys, tmp_path, monkeypatch):
+    """'cannot read: [Errno 2] No such file or directory: ...' told a newcomer what Python thought."""
+    monkeypatch.chdir(Path(__file__).parent.parent)
+    assert main([*argv[:-1], str(tmp_path / argv[-1])]) == 1
+    err = capsys.readouterr().err
+    assert message in err and "Errno" not in err and err.count("\n") == 1

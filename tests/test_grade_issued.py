@@ -267,3 +267,11 @@ def test_a_misnamed_file_is_told_to_the_student_it_names(issued, tmp_path, monke
     assert "No answer file was handed in" in (tmp_path / "g" / "feedback" / "A21005.md").read_text(encoding="utf-8")
     gradebook = (tmp_path / "g" / "gradebook.csv").read_text(encoding="utf-8")
     assert next(line for line in gradebook.splitlines() if line.startswith("A21003")).endswith(",no submission")
+
+
+def test_a_submissions_folder_that_is_not_there_is_said_plainly(issued, tmp_path, monkeypatch, capsys):
+    assert grade_cli(monkeypatch, issued, tmp_path / "handed_in", "--out", tmp_path / "g") == 1
+    assert capsys.readouterr().err.strip().endswith("handed_in: no such folder")
+    (tmp_path / "answers.yaml").write_text("answers: {}\n")
+    assert grade_cli(monkeypatch, issued, tmp_path / "answers.yaml", "--out", tmp_path / "g") == 1
+    assert "answers.yaml: not a folder: give the folder holding the answer files" in capsys.readouterr().err
