@@ -2,10 +2,12 @@
 CSS and SVG, nothing fetched) and as Markdown, from its results.json. `exgen grade` writes both too."""
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 from pathlib import Path
 
 import jinja2
+from markupsafe import Markup, escape
 
 from .analysis import LOW_DISCRIMINATION, analyse
 from .charts import facility_svg, histogram_svg
@@ -22,6 +24,11 @@ _MD_SPECIAL = str.maketrans({c: "\\" + c for c in "\\`*_[]<>|"})
 def _environment(autoescape: bool) -> jinja2.Environment:
     return jinja2.Environment(loader=jinja2.FileSystemLoader(str(LAYOUTS)), undefined=jinja2.StrictUndefined,
                               autoescape=autoescape, trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True)
+
+
+def _code_spans(text) -> Markup:
+    """Text escaped for HTML, with its `quoted` parts (a reason quotes what a file says) as <code>."""
+    return Markup(re.sub(r"`([^`<>]*)`", r"<code>\1</code>", str(escape(text))))
 
 
 def _md(text) -> str:
@@ -45,7 +52,7 @@ def report_pages(record: dict) -> dict[str, str]:
     analysis = analyse(_clean(record))
     common = {"a": analysis, "points": points, "low": LOW_DISCRIMINATION}
     html = _environment(True).get_template("analysis.html.j2").render(
-        common, histogram=histogram_svg(analysis), facility=facility_svg(analysis))
+        common, histogram=histogram_svg(analysis), facility=facility_svg(analysis), quoted=_code_spans)
     markdown = _environment(False).get_template("analysis.md.j2").render(
         common, md=_md, code=lambda text: shown_code(text, 300))
     return {HTML: html, MARKDOWN: markdown}

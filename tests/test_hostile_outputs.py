@@ -75,6 +75,7 @@ def test_the_html_item_analysis_escapes_every_tag(graded):
     html = (graded / "item-analysis.html").read_text(encoding="utf-8")
     assert "<script>alert" not in html and "<img src=x" not in html and "<b>" not in html
     assert "&lt;img src=x onerror=alert(1)&gt;" in html  # shown, as text
+    assert "<code>student: A21099</code>" in html  # what a file says, quoted as code, not between backticks
 
 
 def test_the_markdown_item_analysis_keeps_hostile_names_inside_their_code_spans(graded):
