@@ -1,12 +1,16 @@
 """LaTeX math -> plain Unicode for the terminal and plain files: θ = π − 2α, T₁/T₂ = e^(μθ), sin⁻¹((r₂ − r₁)/X);
 text with $...$ math spans -> the same text with its math so written (text_to_plain).
 
-Covers what templates and solvers write (fractions, roots, sub- and superscripts, Greek,
-\\mathrm, \\text, \\operatorname, \\left/\\right, spacing); an unknown command prints its name.
+Covers what templates and solvers write (fractions, roots, sub- and superscripts, Greek, integrals,
+accents, \\mathrm, \\text, \\operatorname, \\left/\\right, spacing). A fraction's denominator that is
+more than one factor is bracketed, a/(2π), and so is a fraction a factor follows, (1/2)mv²: plain text
+has no bar to show where a fraction ends. An unknown command keeps its backslash, so that a gap in
+this table shows (and a test over every template's text finds it) instead of passing as a word.
 """
 from __future__ import annotations
 
 import re
+import unicodedata
 from functools import lru_cache
 
 GREEK = {
@@ -21,16 +25,26 @@ SYMBOLS = {
     "neq": "≠", "approx": "≈", "infty": "∞", "circ": "°", "degree": "°", "to": "→", "rightarrow": "→",
     "lceil": "⌈", "rceil": "⌉", "lfloor": "⌊", "rfloor": "⌋", "%": "%", "$": "$", "{": "{", "}": "}",
     "_": "_", "#": "#", "&": "&", "ldots": "…", "dots": "…", "cdots": "⋯", "partial": "∂", "sum": "Σ",
-    "angle": "∠",
+    "int": "∫", "iint": "∬", "oint": "∮", "prod": "Π", "angle": "∠", "div": "÷", "propto": "∝", "sim": "∼",
+    "equiv": "≡", "ll": "≪", "gg": "≫", "Rightarrow": "⇒", "leftarrow": "←", "perp": "⊥", "parallel": "∥",
+    "nabla": "∇", "ell": "ℓ", "hbar": "ħ", "prime": "′", "vert": "|", "lvert": "|", "rvert": "|", "|": "‖",
+    "langle": "⟨", "rangle": "⟩", "cap": "∩", "cup": "∪", "in": "∈", "forall": "∀", "exists": "∃",
 }
 #: A fraction of small whole numbers written as one character where a factor follows it: ½I, not 1/2I.
 VULGAR = {("1", "2"): "½", ("1", "3"): "⅓", ("2", "3"): "⅔", ("1", "4"): "¼", ("3", "4"): "¾"}
+#: Relations and binary operators set with a space each side.
+SPACED = {"times", "le", "leq", "ge", "geq", "ne", "neq", "approx", "pm", "mp", "to", "rightarrow", "Rightarrow",
+          "leftarrow", "div", "propto", "sim", "equiv", "ll", "gg", "in"}
+#: Accents as combining marks after their argument (ω⃗, θ̈, ẋ).
+ACCENTS = {"vec": "\u20d7", "dot": "\u0307", "ddot": "\u0308", "hat": "\u0302", "bar": "\u0304",
+           "overline": "\u0305", "tilde": "\u0303"}
 SPACES = {",": "", ":": " ", ";": " ", " ": " ", "!": "", "quad": "  ", "qquad": "   "}
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "cosec", "arcsin", "arccos", "arctan", "sinh",
              "cosh", "tanh", "ln", "log", "exp", "max", "min", "lim", "det"}
 TEXT_COMMANDS = {"mathrm", "text", "textrm", "operatorname", "mathit", "mathbf", "boldsymbol", "mathsf",
                  "textit", "textbf", "mbox"}
-DROPPED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "displaystyle", "textstyle", "limits"}
+DROPPED = {"left", "right", "big", "Big", "bigl", "bigr", "Bigl", "Bigr", "bigg", "Bigg", "displaystyle", "textstyle",
+           "limits", "nolimits"}
 SUPER = dict(zip("0123456789+-=()nix", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁼⁽⁾ⁿⁱˣ"))
 SUB = dict(zip("0123456789+-=()aehijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋₌₍₎ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ"))
 # A math span: an unescaped $ ... unescaped $ (a literal dollar is written \$).
@@ -83,15 +97,25 @@ class _Parser:
         return self.item() if self.peek() is not None else ""
 
     def text_argument(self) -> str:
-        """The argument of \\text and friends, keeping its spaces ("spring in tension")."""
+        """The argument of \\text and friends as text: its spaces, hyphens and apostrophes as written
+        ("spring in tension", "counter-clockwise"), groups inside it included."""
         if self.peek() != "{":
             return self.argument()
         self.take()
         parts = []
         while self.peek() is not None and self.peek() != "}":
-            parts.append(" " if self.peek() == " " else self.item())
-            if parts[-1] == " ":
-                self.take()
+            token = self.take()
+            if token == "{":
+                self.at -= 1
+                parts.append(self.text_argument())
+            elif token == "~":
+                parts.append(" ")
+            elif token.startswith("\\") and len(token) > 1:
+                name = token[1:]
+                parts.append(" " if name in SPACES else self.command(name).strip() if name in SYMBOLS
+                             else self.command(name))
+            else:
+                parts.append(token)
         self.take()
         return "".join(parts)
 
@@ -113,23 +137,6 @@ class _Parser:
             return token
         return self.command(token[1:])
 
-    def _factor_follows(self) -> str | None:
-        """What follows, if it multiplies what came before ("digit" or "term"); None if an operator or nothing."""
-        at = self.at
-        while at < len(self.tokens) and self.tokens[at] in (" ", "\\,", "\\!", "\\;", "\\:", "\\ "):
-            at += 1
-        token = self.tokens[at] if at < len(self.tokens) else None
-        if token is None:
-            return None
-        if token[0].isdigit():
-            return "digit"
-        if token.startswith("\\"):
-            name = token[1:]
-            multiplies = name in GREEK or name in FUNCTIONS or name in TEXT_COMMANDS or name in (
-                "frac", "dfrac", "tfrac", "sqrt", "left", "vec")
-            return "term" if multiplies else None
-        return "term" if token.isalpha() or token in ("(", "[", "{") else None
-
     def _unary(self) -> bool:
         """A minus with no operand before it (at the start, after a bracket or an operator) is a sign."""
         at = self.at - 2
@@ -141,35 +148,71 @@ class _Parser:
         return before in ("(", "{", "[", "=", "+", "-", "^", "_", ",", "\\times", "\\cdot", "\\left", "\\frac")
 
     def command(self, name: str) -> str:
-        if name == "frac" or name in ("dfrac", "tfrac"):
-            top, bottom = self.argument(), self.argument()
-            text = f"{_grouped(top)}/{_grouped(bottom)}"
+        if name in ("frac", "dfrac", "tfrac", "cfrac"):
+            (top, top_factors), (bottom, bottom_factors) = self.measured_argument(), self.measured_argument()
+            top = top.strip() if top_factors else f"({top.strip()})"  # 2πN/60, (d₁ + t)/2
+            bottom = bottom.strip() if bottom_factors == 1 else f"({bottom.strip()})"  # a/2, a/(2π)
+            fraction = f"{top}/{bottom}"
             factor = self._factor_follows()
             if not factor:
-                return text
+                return fraction
             if factor != "digit" and (top, bottom) in VULGAR:
-                return VULGAR[top, bottom]
-            return f"({text})"  # "1/2I" would read 1/(2I)
+                return VULGAR[top, bottom]  # ½I(ω₁² − ω₂²)
+            return f"({fraction})"  # "1/2I" would read 1/(2I)
         if name == "sqrt":
-            return "√" + _grouped(self.argument())
+            root = ROOTS.get(self.optional_argument(), "√")
+            radicand, factors = self.measured_argument()
+            return root + (radicand.strip() if factors == 1 else f"({radicand.strip()})")
         if name == "operatorname":
             return self.function(self.argument())
         if name in TEXT_COMMANDS:
             return self.text_argument()
-        if name == "vec":  # a vector: the symbol with a combining arrow above (ω⃗)
-            return self.argument() + "\u20d7"
+        if name in ACCENTS:  # a combining mark after its symbol: ω⃗, θ̈
+            return self.argument() + ACCENTS[name]
         if name in DROPPED:
+            if name in ("left", "right") and self.peek() == ".":  # \\left. opens nothing
+                self.take()
             return ""
         if name in SPACES:
             return SPACES[name]
         if name in GREEK:
             return GREEK[name]
         if name in SYMBOLS:
-            return f" {SYMBOLS[name]} " if name in ("times", "le", "leq", "ge", "geq", "ne", "neq", "approx",
-                                                     "pm", "to", "rightarrow") else SYMBOLS[name]
+            return f" {SYMBOLS[name]} " if name in SPACED else SYMBOLS[name]
         if name in FUNCTIONS:
             return " " + self.function(name)
-        return name
+        return "\\" + name
+
+    def optional_argument(self) -> str:
+        """[3] after \\sqrt, as its text ("" when there is none)."""
+        if self.peek() != "[":
+            return ""
+        self.take()
+        return self.sequence("]")
+
+    def measured_argument(self) -> tuple[str, int | None]:
+        """An argument and how many factors it multiplies (see _factors; None when it is no product)."""
+        start = self.at
+        text = self.argument()
+        return text, _factors(self.tokens[start:self.at])
+
+    def _factor_follows(self) -> str | None:
+        """What comes straight after, if it multiplies (1/2 then m v², which would read as part of a
+        denominator): "digit" or "term"; None for an operator or nothing."""
+        at = self.at
+        while at < len(self.tokens) and (self.tokens[at] == " " or self.tokens[at][1:] in SPACES):
+            at += 1
+        if at >= len(self.tokens):
+            return None
+        token = self.tokens[at]
+        if token[0].isdigit():
+            return "digit"
+        if not token.startswith("\\") or len(token) == 1:
+            return "term" if token.isalnum() or token in ("(", "[", "{") else None
+        name = token[1:]
+        multiplies = name in GREEK or name in ACCENTS or name in TEXT_COMMANDS or name in FUNCTIONS or \
+            name in ("frac", "dfrac", "tfrac", "cfrac", "sqrt", "left", "operatorname", "infty", "partial")
+        return "term" if multiplies else None
 
     def function(self, name: str) -> str:
         """sin, cosec, ...: scripts attach to the name (sin⁻¹), then a space before the argument."""
@@ -182,16 +225,74 @@ class _Parser:
         return name + " "
 
 
-def _grouped(text: str) -> str:
-    """Parenthesise a fraction part or root argument unless it is a single term."""
-    text = text.strip()
-    return text if re.fullmatch(r"[\w.′°⁰¹²³⁴⁵⁶⁷⁸⁹₀₁₂₃₄₅₆₇₈₉ₐₑₕᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ]+", text) else f"({text})"
+ROOTS = {"": "√", "2": "√", "3": "∛", "4": "∜"}
+_ONE_SYMBOL = set(GREEK) | {"infty", "ell", "hbar", "partial", "nabla", "prime"}
+_CLOSE = {"(": ")", "[": "]", "{": "}"}
+
+
+def _factors(tokens: list[str]) -> int | None:
+    """How many factors LaTeX tokens multiply (2π: 2), each a number, a symbol with its scripts, accents
+    and primes, a text, a root or a bracketed group; None for anything else (a sum, a fraction)."""
+    tokens = [t for t in tokens if t[1:] not in SPACES]
+    while tokens and tokens[0] == " ":
+        tokens = tokens[1:]
+    while tokens and tokens[0] == "{" and _past_group(tokens, 0) == len(tokens):  # an argument's own braces
+        tokens = tokens[1:-1]
+    factors, at = 0, 0
+    while at < len(tokens):
+        token = tokens[at]
+        if token in ("^", "_"):  # a script belongs to the factor before it
+            at = _past_argument(tokens, at + 1)
+            continue
+        if token in ("'", " "):
+            at += 1
+            continue
+        factors += 1
+        if token in _CLOSE or token == "\\left":
+            at = _past_group(tokens, at)
+        elif token[0].isdigit() or token == ".":
+            while at < len(tokens) and (tokens[at].isdigit() or tokens[at] == "."):
+                at += 1
+        elif token.isalpha() and len(token) == 1:
+            at += 1
+        elif token[1:] in _ONE_SYMBOL:
+            at += 1
+        elif token[1:] in TEXT_COMMANDS or token[1:] in ACCENTS or token[1:] in ("sqrt", "operatorname"):
+            end = _past_argument(tokens, at + 1)
+            if token[1:] in TEXT_COMMANDS and " " in tokens[at + 2:end - 1]:
+                return None  # words: "time taken" is no one factor in plain text
+            at = end
+        else:
+            return None
+    return factors
+
+
+def _past_argument(tokens: list[str], at: int) -> int:
+    """The index after the argument that starts at `at` (a group or one token)."""
+    if at < len(tokens) and tokens[at] == "[":  # \\sqrt[3]
+        at = _past_group(tokens, at)
+    if at < len(tokens) and tokens[at] == "{":
+        return _past_group(tokens, at)
+    return at + 1
+
+
+def _past_group(tokens: list[str], at: int) -> int:
+    """The index after the bracket (or \\left ... \\right pair) that opens at `at` is closed."""
+    opening = tokens[at]
+    pairs = ("\\left", "\\right") if opening == "\\left" else (opening, _CLOSE[opening])
+    depth = 0
+    while at < len(tokens):
+        depth += (tokens[at] == pairs[0]) - (tokens[at] == pairs[1])
+        at += 1
+        if depth == 0:
+            return at + 1 if opening == "\\left" else at  # past \\right's bracket too
+    return at
 
 
 def _script(text: str, table: dict, mark: str) -> str:
     if text.strip() == "°":
         return "°"
-    compact = text.replace(" ", "").replace("−", "-")
+    compact = re.sub(r"\s*([−+=])\s*", r"\1", text.strip()).replace("−", "-")  # ⁻¹, not ^(−1); a space is kept
     if compact and all(ch in table for ch in compact):
         return "".join(table[ch] for ch in compact)
     text = text.strip()
@@ -202,7 +303,7 @@ def _script(text: str, table: dict, mark: str) -> str:
 def latex_to_unicode(latex: str) -> str:
     text = _Parser(_tokens(latex)).sequence()
     text = re.sub(r" {2,}", " ", text).strip()
-    return text.replace("( ", "(").replace(" )", ")")
+    return unicodedata.normalize("NFC", text.replace("( ", "(").replace(" )", ")"))  # x and a dot: ẋ
 
 
 def split_math(text: str) -> list[tuple[bool, str]]:
