@@ -152,6 +152,35 @@ def test_a_student_practises_a_topic_with_the_mouse(page, server, tmp_path):
     assert page.locator("svg.chart rect").count() > 7 and "Belts" in page.locator("table.progress").inner_text()
 
 
+def platform_fonts(page, selector) -> list[dict]:
+    """The fonts Chromium drew a node's text with (DevTools' CSS.getPlatformFontsForNode)."""
+    cdp = page.context.new_cdp_session(page)
+    cdp.send("DOM.enable")
+    cdp.send("CSS.enable")
+    root = cdp.send("DOM.getDocument", {"depth": -1})["root"]["nodeId"]
+    node = cdp.send("DOM.querySelector", {"nodeId": root, "selector": selector})["nodeId"]
+    assert node, f"nothing matches {selector}"
+    return cdp.send("CSS.getPlatformFontsForNode", {"nodeId": node})["fonts"]
+
+
+def test_figures_and_problem_text_are_set_in_the_sheets_font(page, server):
+    """New Computer Modern from the app's own files: the figure's labels (placed by that font's metrics),
+    the statement and the formulas, as in the PDFs; never a fallback serif."""
+    url, _ = server
+    page.goto(url + "/")
+    page.locator("summary", has_text="problem types").first.click()
+    page.get_by_role("button", name="Speed of a countershaft driven through a compound belt drive").click()
+    page.wait_for_url("**/problem/*")
+    page.get_by_role("button", name="Show the worked solution").click()
+    page.locator("#solution-heading").wait_for()
+    page.evaluate("document.fonts.ready.then(() => true)")
+    for selector, face in (("figure svg text", "NewCMexgen-Regular"), (".statement", "NewCMexgen-Regular"),
+                           ("#solution math mi", "NewCMexgen-Math")):
+        fonts = platform_fonts(page, selector)
+        assert fonts and all(f["isCustomFont"] and f["familyName"] == "NewCM exgen" for f in fonts), (selector, fonts)
+        assert face in {f["postScriptName"] for f in fonts}, (selector, fonts)
+
+
 def test_the_same_with_the_keyboard_alone(page, server):
     url, _ = server
     page.goto(url + "/")

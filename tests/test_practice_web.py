@@ -1,6 +1,7 @@
 """The practice web app over HTTP: pages, checks without a reload, and hostile requests (oversized or
 malformed bodies, other sites, other host names, paths outside the assets, a script in an answer)."""
 import random
+import re
 import socket
 import sqlite3
 
@@ -133,8 +134,12 @@ def test_assets_are_served_from_the_package_with_etags(client):
     css = client.get("/static/practice.css")
     assert css.status_code == 200 and css.headers["content-type"].startswith("text/css")
     assert client.get("/static/practice.css", headers={"if-none-match": css.headers["etag"]}).status_code == 304
-    font = client.get("/static/NotoSansMath-Regular.woff2")
-    assert font.headers["content-type"] == "font/woff2" and font.content[:4] == b"wOF2"
+    fonts = re.findall(r'url\("(/static/[^"]+\.woff2)"\)', css.text)
+    assert len(fonts) == 5  # New Computer Modern's four text faces and its math face
+    for path in fonts:
+        font = client.get(path)
+        assert font.headers["content-type"] == "font/woff2" and font.content[:4] == b"wOF2"
+    assert "GUST Font License" in client.get("/static/NewCM-README.txt").text
 
 
 def test_every_page_forbids_outside_scripts_and_styles(client):
