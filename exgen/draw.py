@@ -2,7 +2,7 @@
 
 Values are chosen by index from each parameter's list of allowed values using the raw
 64-bit output of PCG64, so the stream does not depend on how a numpy version maps bits to
-integers. Values are Decimals exactly as printed on the sheet (DESIGN.md property 3).
+integers. Values are Decimals exactly as printed on the sheet (what a student reads is exactly what the solver used).
 """
 from __future__ import annotations
 
