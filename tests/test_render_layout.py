@@ -105,3 +105,20 @@ def test_no_worked_line_is_wider_than_the_page(bank):
         assert len(lines) > 5 * len(templates)
         too_wide = [m for m in lines if m["width"] > m["room"] + 0.5]
         assert not too_wide, too_wide[:5]
+
+
+
+def test_a_long_footer_never_runs_into_the_page_number(preamble):
+    """A footer that filled its line only by narrowing its spaces (the paragraph is justified) read
+    'Sheet DB44-CC2DPage 1 of 11'; footers of every length around one line's must keep a gap."""
+    import io
+
+    import pypdf
+
+    title = "Instructor key · BMCM 2723 Mechanics of Machines · Tutorial 5: Gyroscopes and free vibration"
+    for extra in range(12):
+        footer = title + " x" * extra + " · Sheet DB44-CC2D"
+        source = preamble.replace("[],\n      [Page", f"[{footer}],\n      [Page") + "Body.\n"
+        assert footer in source
+        text = pypdf.PdfReader(io.BytesIO(typst.compile(source.encode("utf-8")))).pages[0].extract_text()
+        assert "CC2DPage" not in text and "Page 1 of 1" in text, (extra, text)
