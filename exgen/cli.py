@@ -178,13 +178,14 @@ def cmd_generate(args) -> int:
     secret, source = _secret(args, assignment.secret_file, create=True)
     recorded = source if source.startswith("$") else str(Path(source).resolve())
     issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
-                      jobs=args.jobs or default_jobs(), progress=_progress, secret_source=recorded,
-                      print_bundle=args.print)
+                      key_pdf=not args.no_key_pdf, jobs=args.jobs or default_jobs(), progress=_progress,
+                      secret_source=recorded, print_bundle=args.print)
     kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
-    print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; keys in {issued.out / 'keys'}")
+    keys = "keys (Markdown, PDF)" if not (args.no_pdf or args.no_key_pdf) else "keys (Markdown)"
+    print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; {keys} in {issued.out / 'keys'}")
     if args.print:
-        print(f"for printing: {issued.out / 'print' / 'sheets.pdf'} (every sheet, roster order), "
-              f"{issued.out / 'print' / 'keys.pdf'} (every key)")
+        print(f"for printing: {issued.out / 'print' / 'sheets.pdf'} (every sheet, roster order)"
+              + (f", {issued.out / 'print' / 'keys.pdf'} (every key)" if not args.no_key_pdf else ""))
     print(f"manifest: {issued.manifest}")
     return 0
 
@@ -376,7 +377,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--roster", help="class list CSV with an id column (name, email optional)")
     p.add_argument("--out", required=True, help="output folder")
     p.add_argument("--secret-file", help="course secret file (default: the assignment's secret_file, or $EXGEN_SECRET)")
-    p.add_argument("--no-pdf", action="store_true", help="Markdown only (faster)")
+    p.add_argument("--no-pdf", action="store_true", help="Markdown only (fastest)")
+    p.add_argument("--no-key-pdf", action="store_true",
+                   help="keys in Markdown only; sheets still get their PDF (a key's PDF takes as long as three sheets')")
     p.add_argument("--jobs", type=_count(1), help="processes making PDFs (default: one per core, up to 8)")
     p.add_argument("--print", action="store_true", help="also print/sheets.pdf, every sheet in roster order (each "
                                                         "starting on a new leaf when printed on both sides), and "

@@ -12,13 +12,12 @@ files and keys go to separate folders so the `students/` folder can be handed ou
 """
 from __future__ import annotations
 
-import multiprocessing
 import os
-from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Iterable
 
+from . import parallel
 from .assignment import Assignment, Sheet, Student, build_sheet
 from .bank import Bank
 from .manifest import MANIFEST, build_manifest, write_manifest
@@ -61,8 +60,9 @@ def write_figures(sheet: Sheet, student_dir: Path, key_dir: Path):
     return figures
 
 
-def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
-    """The student's folder (sheet, form, figures) and the instructor's key folder."""
+def write_student(sheet: Sheet, out: Path, pdf: bool = True, key_pdf: bool = True) -> None:
+    """The student's folder (sheet, form, figures) and the instructor's key folder; `key_pdf` False
+    leaves the key in Markdown only (its PDF costs most of a sheet's time)."""
     from .render.markdown import key_markdown, sheet_markdown
 
     student_dir = out / "students" / sheet.student.id
@@ -74,16 +74,17 @@ def write_student(sheet: Sheet, out: Path, pdf: bool = True) -> None:
     (student_dir / "answers.yaml").write_text(answer_form(sheet), encoding="utf-8")
     (key_dir / "key.md").write_text(key_markdown(sheet, figures), encoding="utf-8")
     if pdf:
-        from .render.pdf import key_pdf, sheet_pdf
+        from .render.pdf import key_pdf as make_key_pdf, sheet_pdf
 
         (student_dir / "sheet.pdf").write_bytes(sheet_pdf(sheet, figures))
-        (key_dir / "key.pdf").write_bytes(key_pdf(sheet, figures))
+        if key_pdf:
+            (key_dir / "key.pdf").write_bytes(make_key_pdf(sheet, figures))
 
 
-def _write_in_worker(job) -> str:
+def _write_in_worker(student: Student) -> str:
     """Rebuild one sheet from its inputs (drawing is pure and cheap) and write its files."""
-    assignment, student, bank, secret, out, pdf = job
-    write_student(build_sheet(assignment, student, bank, secret), out, pdf)
+    assignment, bank, secret, out, pdf, key_pdf = parallel.shared()
+    write_student(build_sheet(assignment, student, bank, secret), out, pdf, key_pdf)
     return student.id
 
 
@@ -92,27 +93,27 @@ def default_jobs() -> int:
 
 
 def generate(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes, out: Path,
-             *, pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress,
+             *, pdf: bool = True, key_pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress,
              secret_source: str = "", print_bundle: bool = False) -> Issued:
     """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
-    (exgen.outdir); with jobs > 1 the PDFs are made in parallel processes."""
+    (exgen.outdir); with jobs > 1 the PDFs are made in that many processes (Markdown alone is made in
+    this one: starting processes would cost more than it saves)."""
     out = Path(out)
     check_target(out, KIND)  # before the slow part: a folder that cannot be replaced stops the run now
     sheets = draw_sheets(assignment, students, bank, secret, progress)
     manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
     with replacing(out, KIND) as folder:
-        if jobs > 1 and len(sheets) > 1:
-            work = [(assignment, s.student, bank, secret, folder, pdf) for s in sheets]
-            # spawn, not fork: a forked child can inherit typst's threads' locks held, and hang
-            with ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn")) as pool:
-                for _ in progress(pool.map(_write_in_worker, work, chunksize=4), len(work), "writing"):
-                    pass
+        if pdf and jobs > 1 and len(sheets) > 1:
+            written = parallel.run(_write_in_worker, [s.student for s in sheets], min(jobs, len(sheets)),
+                                   (assignment, bank, secret, folder, pdf, key_pdf), chunksize=2)
+            for _ in progress(written, len(sheets), "writing"):
+                pass
         else:
             for sheet in progress(sheets, len(sheets), "writing"):
-                write_student(sheet, folder, pdf)
+                write_student(sheet, folder, pdf, key_pdf)
         if print_bundle and pdf:
             from .render.bundle import write_bundles
 
-            write_bundles(folder, [s.student.id for s in sheets])
+            write_bundles(folder, [s.student.id for s in sheets], keys=key_pdf)
         write_manifest(manifest, folder / MANIFEST)
     return Issued(out, tuple(sheets), out / MANIFEST)

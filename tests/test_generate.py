@@ -83,3 +83,48 @@ def test_keys_grade_themselves_at_full_marks(issued, bank, tmp_path):
         (tmp_path / f"{student.id}.yaml").write_text(form, encoding="utf-8")
     batch = grade_batch(assignment, bank, SECRET, tmp_path, roster=students)
     assert [r.percent for r in batch.sheets] == [100.0] * len(students)
+
+
+def _children() -> set[int]:
+    """Processes whose parent is this one (from /proc)."""
+    import os
+
+    found = set()
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:  # it ended while we looked
+            continue
+        if int(fields[1]) == os.getpid() and fields[0] != "Z":
+            found.add(int(stat.parent.name))
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads the process table from /proc")
+def test_parallel_generate_leaves_no_process_behind(bank, tmp_path):
+    assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
+    students = load_roster(EXAMPLES / "roster.csv")[:2]
+    before = _children()
+    generate(assignment, students, bank, SECRET, tmp_path / "out", jobs=2)
+    assert (tmp_path / "out" / "keys" / students[1].id / "key.pdf").exists()
+    assert _children() <= before  # no worker, no resource tracker
+
+
+def test_markdown_only_starts_no_process_and_keys_can_skip_their_pdf(bank, tmp_path, monkeypatch):
+    import exgen.parallel
+
+    def refuse(*args, **kwargs):
+        raise AssertionError("Markdown alone needs no worker process")
+
+    monkeypatch.setattr(exgen.parallel, "run", refuse)
+    assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
+    students = load_roster(EXAMPLES / "roster.csv")[:2]
+    generate(assignment, students, bank, SECRET, tmp_path / "md", pdf=False, jobs=4)
+    made = {p.name for p in (tmp_path / "md").rglob("*")}
+    assert {"sheet.md", "key.md"} <= made and not any(name.endswith(".pdf") for name in made)
+
+    generate(assignment, students, bank, SECRET, tmp_path / "sheets", key_pdf=False)
+    for student in students:
+        assert (tmp_path / "sheets" / "students" / student.id / "sheet.pdf").exists()
+        key = tmp_path / "sheets" / "keys" / student.id
+        assert (key / "key.md").exists() and not (key / "key.pdf").exists()

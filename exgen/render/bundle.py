@@ -28,10 +28,13 @@ def join_pdfs(paths: list[Path], out: Path, duplex: bool = True) -> int:
     return len(writer.pages)
 
 
-def write_bundles(folder: Path, student_ids: list[str]) -> dict[str, Path]:
-    """print/sheets.pdf and print/keys.pdf of an issued folder, in the order of `student_ids`."""
+def write_bundles(folder: Path, student_ids: list[str], keys: bool = True) -> dict[str, Path]:
+    """print/sheets.pdf and print/keys.pdf of an issued folder, in the order of `student_ids`
+    (no keys.pdf when the keys were made without PDFs, `keys` False)."""
     target = folder / BUNDLE
     target.mkdir(exist_ok=True)
     join_pdfs([folder / "students" / s / "sheet.pdf" for s in student_ids], target / SHEETS)
+    if not keys:
+        return {"sheets": target / SHEETS}
     join_pdfs([folder / "keys" / s / "key.pdf" for s in student_ids], target / KEYS)
     return {"sheets": target / SHEETS, "keys": target / KEYS}

@@ -1,0 +1,52 @@
+"""Work spread over processes, and nothing left running afterwards.
+
+Processes are spawned, not forked: a forked child can inherit the lock of a thread Typst was running
+in the parent, and hang. The shared inputs (bank, assignment, secret) reach each worker once, through
+its initializer, not with every task. A spawned pool starts multiprocessing's resource tracker, a
+process that outlives the pool; it is stopped here too when this pool was what started it, so a
+caller that lives on (a test run, a server) keeps no stray process.
+"""
+from __future__ import annotations
+
+import gc
+from contextlib import contextmanager
+from typing import Callable, Iterable, Iterator
+
+_shared: tuple = ()
+
+
+def shared() -> tuple:
+    """In a worker: the arguments its pool was started with."""
+    return _shared
+
+
+def _set_shared(*args) -> None:
+    global _shared
+    _shared = args
+
+
+@contextmanager
+def _pool(jobs: int, args: tuple):
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+    from multiprocessing import resource_tracker
+
+    tracker = resource_tracker._resource_tracker
+    tracker_was_running = getattr(tracker, "_fd", None) is not None
+    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn"),
+                               initializer=_set_shared, initargs=args)
+    try:
+        yield pool
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+        del pool
+        gc.collect()  # the pool's queues release their semaphores (a release would restart the tracker)
+        if not tracker_was_running and hasattr(tracker, "_stop"):
+            tracker._stop()
+
+
+def run(task: Callable, items: Iterable, jobs: int, args: tuple = (), chunksize: int = 1) -> Iterator:
+    """`task(item)` for each item in `jobs` processes, results in order; `task` reads `shared()` for
+    `args`. Every worker has ended when the iteration ends, or when it is abandoned."""
+    with _pool(jobs, args) as pool:
+        yield from pool.map(task, items, chunksize=chunksize)
