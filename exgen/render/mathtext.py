@@ -20,6 +20,8 @@ _TYPST_ALWAYS = set("\\#*_$`<>@[]~")
 _TYPST_LINE_START = re.compile(r"^([ \t]*)([=+\-/]|\d+\.(?=\s|$))", re.MULTILINE)
 _MD_ALWAYS = set("\\`*_[]<>|$")
 _MD_LINE_START = re.compile(r"^([ \t]*)(#|[+\-](?=\s)|\d+\.(?=\s))", re.MULTILINE)
+_TYPST_ESCAPES = str.maketrans({ch: "\\" + ch for ch in _TYPST_ALWAYS})
+_MD_ESCAPES = str.maketrans({ch: "\\" + ch for ch in _MD_ALWAYS})
 
 
 class MathError(ExgenError, ValueError):
@@ -43,7 +45,7 @@ def latex_to_typst(latex: str) -> str:
 
 def escape_typst(prose: str) -> str:
     """Plain text -> Typst markup that shows exactly that text."""
-    text = "".join("\\" + ch if ch in _TYPST_ALWAYS else ch for ch in prose)
+    text = prose.translate(_TYPST_ESCAPES)
     text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
     text = _DOTTED_UNIT.sub(_tight_unit, text)
     text = _NEGATIVE_NUMBER.sub("\u2212", text)
@@ -73,7 +75,7 @@ def _tight_unit(match: re.Match) -> str:
 
 def escape_markdown(prose: str) -> str:
     """Plain text -> Markdown that shows exactly that text (no emphasis, links, lists or math)."""
-    text = "".join("\\" + ch if ch in _MD_ALWAYS else ch for ch in prose)
+    text = prose.translate(_MD_ESCAPES)
     return _MD_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
 
 

@@ -11,6 +11,7 @@ nearly equal numbers).
 from __future__ import annotations
 
 import math
+import weakref
 from dataclasses import dataclass
 from typing import Any
 
@@ -118,7 +119,22 @@ class Solution:
         return tuple(b for b in self.blocks if isinstance(b, WorkLine))
 
 
+#: Each variant's worked solution, kept while the variant lives: a sheet's Markdown and PDF, sheet and
+#: key, all read it (keyed by identity: a Variant holds mappings and has no hash).
+_SOLVED: dict[int, Solution] = {}
+
+
 def solution(variant) -> Solution:
+    """The worked solution of a variant (worked once; a variant is frozen)."""
+    key = id(variant)
+    found = _SOLVED.get(key)
+    if found is None:
+        found = _SOLVED[key] = _solution(variant)
+        weakref.finalize(variant, _SOLVED.pop, key, None)
+    return found
+
+
+def _solution(variant) -> Solution:
     values = values_of(variant)
     plans = {}
     for step in variant.steps:
