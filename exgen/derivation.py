@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 from .errors import ExgenError, InvalidDraw
@@ -193,6 +194,7 @@ GREEK = {
 }
 
 
+@lru_cache(maxsize=4096)
 def default_symbol(name: str) -> str:
     """A LaTeX symbol from a name: mu -> \\mu, d1 -> d_1, T_max -> T_{\\mathrm{max}}, omega_2 -> \\omega_2."""
     if "_" in name:

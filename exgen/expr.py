@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 import math
 import operator
+from functools import lru_cache
 
 MAX_LENGTH = 300
 MAX_POWER = 1e6  # keeps 9**9**9 from hanging the process
@@ -58,52 +59,92 @@ def names_in(tree: ast.AST) -> set[str]:
 
 
 def evaluate(text_or_tree, names: dict[str, float]):
-    """Evaluate an expression with the given variable values."""
-    tree = parse(text_or_tree) if isinstance(text_or_tree, str) else text_or_tree
+    """Evaluate an expression with the given variable values (a text is read and checked once, then
+    run as compiled from then on: a template's conditions are evaluated at every draw)."""
     try:
-        return _eval(tree.body, names)
+        run = compiled(text_or_tree) if isinstance(text_or_tree, str) else _compile(text_or_tree.body)
+        return run(names)
     except RecursionError as exc:
         raise ExpressionError("expression nested too deeply") from exc
 
 
-def _eval(node: ast.AST, names: dict):
+@lru_cache(maxsize=4096)
+def compiled(text: str):
+    """The expression as a function of the names' values, built from the whitelisted tree: each node
+    becomes a closure, so it is walked once, not on every call."""
+    try:
+        return _compile(parse(text).body)
+    except RecursionError as exc:
+        raise ExpressionError("expression nested too deeply") from exc
+
+
+def _compile(node: ast.AST):
+    """A closure evaluating `node`: numbers, names, arithmetic, comparisons, logic and FUNCTIONS; anything
+    else is refused when it would run (its operands evaluated first), with ExpressionError."""
     if isinstance(node, ast.Constant) and type(node.value) in (int, float):
-        return node.value
+        value = node.value
+        return lambda names: value
     if isinstance(node, ast.Name):
-        if node.id in names:
-            return names[node.id]
-        if node.id in CONSTANTS:
-            return CONSTANTS[node.id]
-        raise ExpressionError(f"unknown name {node.id!r}")
-    if isinstance(node, ast.UnaryOp):
-        value = _eval(node.operand, names)
+        name = node.id
+
+        def look_up(names):
+            if name in names:
+                return names[name]
+            if name in CONSTANTS:
+                return CONSTANTS[name]
+            raise ExpressionError(f"unknown name {name!r}")
+        return look_up
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd, ast.Not)):
+        operand = _compile(node.operand)
         if isinstance(node.op, ast.USub):
-            return -value
+            return lambda names: -operand(names)
         if isinstance(node.op, ast.UAdd):
-            return +value
-        if isinstance(node.op, ast.Not):
-            return not value
-    if isinstance(node, ast.BinOp):
-        left, right = _eval(node.left, names), _eval(node.right, names)
+            return lambda names: +operand(names)
+        return lambda names: not operand(names)
+    if isinstance(node, ast.BinOp) and (isinstance(node.op, ast.Pow) or type(node.op) in _BINARY):
+        left, right = _compile(node.left), _compile(node.right)
         if isinstance(node.op, ast.Pow):
-            if abs(right) > MAX_POWER or (abs(left) > 1 and abs(right) > 1000):
-                raise ExpressionError("power too large")
-            return left ** right
-        if type(node.op) in _BINARY:
-            return _BINARY[type(node.op)](left, right)
+            def power(names):
+                base, exponent = left(names), right(names)
+                if abs(exponent) > MAX_POWER or (abs(base) > 1 and abs(exponent) > 1000):
+                    raise ExpressionError("power too large")
+                return base ** exponent
+            return power
+        operation = _BINARY[type(node.op)]
+        return lambda names: operation(left(names), right(names))
     if isinstance(node, ast.BoolOp):
-        values = [_eval(v, names) for v in node.values]
-        return all(values) if isinstance(node.op, ast.And) else any(values)
+        values = [_compile(v) for v in node.values]
+        combine = all if isinstance(node.op, ast.And) else any
+        return lambda names: combine([v(names) for v in values])
     if isinstance(node, ast.Compare):
-        left = _eval(node.left, names)
-        for op, comparator in zip(node.ops, node.comparators):
-            right = _eval(comparator, names)
-            if type(op) not in _COMPARE or not _COMPARE[type(op)](left, right):
-                return False
-            left = right
-        return True
+        first = _compile(node.left)
+        chain = [(_COMPARE.get(type(op)), _compile(c)) for op, c in zip(node.ops, node.comparators)]
+
+        def compare(names):
+            left = first(names)
+            for operation, comparator in chain:
+                right = comparator(names)
+                if operation is None or not operation(left, right):
+                    return False
+                left = right
+            return True
+        return compare
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and not node.keywords:
-        if node.func.id not in FUNCTIONS:
-            raise ExpressionError(f"unknown function {node.func.id!r}")
-        return FUNCTIONS[node.func.id](*(_eval(a, names) for a in node.args))
-    raise ExpressionError(f"{type(node).__name__} is not allowed in an expression")
+        function_name = node.func.id
+        args = [_compile(a) for a in node.args]
+
+        def call(names):
+            if function_name not in FUNCTIONS:
+                raise ExpressionError(f"unknown function {function_name!r}")
+            return FUNCTIONS[function_name](*(a(names) for a in args))
+        return call
+    kind = type(node).__name__
+    # anything else is refused, once its operands (if any) have been evaluated
+    operands = [_compile(n) for n in ((node.operand,) if isinstance(node, ast.UnaryOp) else
+                                      (node.left, node.right) if isinstance(node, ast.BinOp) else ())]
+
+    def refuse(names):
+        for operand in operands:
+            operand(names)
+        raise ExpressionError(f"{kind} is not allowed in an expression")
+    return refuse

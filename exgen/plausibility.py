@@ -84,7 +84,7 @@ def readings(template: Template, names: dict[str, float], specs=None) -> tuple[R
     out = []
     for i, spec in enumerate(template.report if specs is None else specs):
         try:
-            value = expr.evaluate(_tree(spec.value), names)
+            value = expr.evaluate(spec.value, names)  # compiled once per expression
         except expr.ExpressionError as exc:
             raise ExgenError(f"{template.id}: report[{i}] ({spec.what}): {exc}") from None
         except (ZeroDivisionError, ValueError, OverflowError):

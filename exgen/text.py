@@ -1,6 +1,7 @@
 """Statement text: Jinja2 with StrictUndefined, so a misspelt parameter is an error, not a blank."""
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 
 import jinja2
@@ -26,5 +27,17 @@ def undeclared_names(text: str) -> set[str]:
         raise ValueError(f"template syntax error on line {exc.lineno}: {exc.message}") from exc
 
 
+#: `{{ name }}`: the only markup most statements and asks use, filled in without Jinja (what Jinja would
+#: print: str() of the value); a text with any other markup, or a name missing, goes through Jinja.
+_PLAIN_NAME = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
+
+
 def render_text(text: str, context: dict) -> str:
+    if "{%" not in text and "{#" not in text and "\r" not in text:
+        try:
+            filled = _PLAIN_NAME.sub(lambda m: str(context[m.group(1)]), text)
+        except KeyError:
+            filled = None
+        if filled is not None and "{{" not in _PLAIN_NAME.sub("", text):
+            return filled.strip()
     return _compile(text).render(context).strip()

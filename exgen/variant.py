@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from types import MappingProxyType
 from typing import Any, Mapping
 
@@ -65,13 +65,35 @@ class Variant:
     steps: tuple[Step, ...]
     answers: Mapping[str, Answer]
     mistakes: Mapping[str, Mapping[str, Any]]  # part id -> mistake name -> value in asked unit
-    statement: str
-    asks: Mapping[str, str]
     tries: int = field(default=1, compare=False)
     warnings: tuple[str, ...] = ()
     inserts: tuple = ()  # tables of the worked solution (derivation.Table)
     derived: tuple[Reading, ...] = ()  # the template's `report:` quantities, in their units
-    unused: frozenset[str] = frozenset()  # givens its text and working leave out (one idler: the second's teeth)
+    worked_uses: frozenset[str] = frozenset()  # givens the solver read or a formula or table names
+
+    @property
+    def statement(self) -> str:
+        """The statement with this variant's values (written when first read: grading never reads it)."""
+        return self._texts[0]
+
+    @property
+    def asks(self) -> Mapping[str, str]:
+        """What each part asks, with this variant's values (written when first read)."""
+        return self._texts[1]
+
+    @property
+    def unused(self) -> frozenset[str]:
+        """Givens its text and working leave out (one idler: the second's teeth)."""
+        return self._texts[2]
+
+    @cached_property
+    def _texts(self) -> tuple[str, Mapping[str, str], frozenset[str]]:
+        printed: set[str] = set()
+        context = {p.name: _Watched(p, printed) for p in self.params}
+        statement = render_text(self.template.statement, context)
+        asks = MappingProxyType({p.id: render_text(p.ask, context) for p in self.template.parts})
+        used = printed | self.worked_uses
+        return statement, asks, frozenset(p.name for p in self.params if p.name not in used)
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -137,17 +159,11 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
     for part in template.parts:
         answers[part.id] = answer_for(part, derivation)
         mistakes[part.id] = MappingProxyType(mistakes_apart(part, answers[part.id].value, derivation, check))
-    printed: set[str] = set()
-    context = {p.name: _Watched(p, printed) for p in params}
-    statement = render_text(template.statement, context)
-    asks = {p.id: render_text(p.ask, context) for p in template.parts}
-    used = printed | derivation.params.read | _named_in_working(derivation)
     return Variant(
         template=template, seed=seed, params=params, steps=tuple(derivation.steps),
         answers=MappingProxyType(answers), mistakes=MappingProxyType(mistakes),
-        statement=statement, asks=MappingProxyType(asks),
         tries=tries, warnings=tuple(derivation.warnings) + tuple(found_warnings), inserts=tuple(derivation.inserts),
-        derived=derived, unused=frozenset(p.name for p in params if p.name not in used),
+        derived=derived, worked_uses=frozenset(derivation.params.read | _named_in_working(derivation)),
     )
 
 

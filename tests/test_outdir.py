@@ -45,11 +45,11 @@ def test_an_interrupted_run_leaves_the_previous_output_whole(tutorial, bank, tmp
     real = generate_module.write_student
     calls = []
 
-    def dies_on_the_second(sheet, folder, pdf=True):
+    def dies_on_the_second(sheet, folder, *options):
         calls.append(sheet.student.id)
         if len(calls) == 2:
             raise KeyboardInterrupt
-        real(sheet, folder, pdf)
+        real(sheet, folder, *options)
 
     monkeypatch.setattr(generate_module, "write_student", dies_on_the_second)
     with pytest.raises(KeyboardInterrupt):

@@ -30,9 +30,15 @@ def choice_aliases() -> dict[str, str]:
     return {a.strip(): b.strip() for a, b in pairs}
 
 
+@lru_cache(maxsize=1)
+def _canonical_aliases() -> dict[str, str]:
+    return {canonical(k): canonical(v) for k, v in choice_aliases().items()}
+
+
 def choice(given: str, expected: str, aliases: Mapping[str, str] | None = None) -> bool:
     """The canonical name of the given choice, after aliases ({'ccw': 'anticlockwise'}), is the expected one."""
-    table = {canonical(k): canonical(v) for k, v in (aliases or {}).items()}
+    table = _canonical_aliases() if aliases is choice_aliases() else \
+        {canonical(k): canonical(v) for k, v in (aliases or {}).items()}
     key = canonical(given)
     return table.get(key, key) == canonical(expected)
 

@@ -81,14 +81,29 @@ def crossings(excess: TrigTorque, period: float | None = None) -> list[float]:
     highest = max(n for n, _, _ in excess.terms)
     count = max(64, math.ceil(GRID_PER_HARMONIC * highest * period / TAU)) + 1
     grid = [period * j / (count - 1) for j in range(count)]
-    values = [excess.at(t) for t in grid]
     found = []
-    for j in range(count - 1):
-        if values[j] == 0.0:
+    for j in _brackets(excess, grid):  # each decided on exact values, as if every point were evaluated so
+        here, after = excess.at(grid[j]), excess.at(grid[j + 1])
+        if here == 0.0:
             found.append(grid[j])
-        elif values[j] * values[j + 1] < 0.0:
-            found.append(_bisect(excess.at, grid[j], grid[j + 1], values[j]))
+        elif here * after < 0.0:
+            found.append(_bisect(excess.at, grid[j], grid[j + 1], here))
     return found
+
+
+def _brackets(excess: TrigTorque, grid: list[float]) -> list[int]:
+    """The grid intervals that may hold a crossing: the torque evaluated on the whole grid at once (numpy),
+    keeping every interval whose ends differ in sign or lie near zero. Elsewhere both ends are far from
+    zero on the same side, so the exact values (math.sin, math.cos) agree in sign with these."""
+    import numpy as np
+
+    theta = np.array(grid)
+    values = np.full(len(grid), excess.mean)
+    for n, s, c in excess.terms:
+        values += s * np.sin(n * theta) + c * np.cos(n * theta)
+    near = np.abs(values) <= 1e-9 * (abs(excess.mean) + sum(abs(s) + abs(c) for _, s, c in excess.terms))
+    maybe = (values[:-1] * values[1:] < 0.0) | near[:-1] | near[1:]
+    return np.flatnonzero(maybe).tolist()
 
 
 def _bisect(f, a: float, b: float, fa: float) -> float:
