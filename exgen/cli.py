@@ -209,8 +209,10 @@ def cmd_grade(args) -> int:
         else None
     secret, source = _secret(args, recorded, create=False)
     roster = load_roster(Path(args.roster)) if args.roster else None
+    from .generate import default_jobs
+
     batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
-                         progress=_progress)
+                         progress=_progress, jobs=args.jobs or default_jobs())
     for warning in batch.warnings:
         print(f"WARNING: {warning}", file=sys.stderr)
     from graders.copying import signs_of_copying
@@ -399,6 +401,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--secret-file", help="course secret file (default: $EXGEN_SECRET, else the file the sheets "
                                          "were generated with)")
     p.add_argument("--roster", help="grade only these students (a class list CSV; all must have been issued sheets)")
+    p.add_argument("--jobs", type=_count(1), help="processes reading and grading a large class (default: one per "
+                                                  "core, up to 8; a class under 200 is graded in one)")
     p.add_argument("--force", action="store_true",
                    help="grade even if the secret or a template differs from what was issued (warned in the report)")
     p.add_argument("--canvas-id", type=_digits, help="the Canvas assignment's id, for the Canvas gradebook's column "

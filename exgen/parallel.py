@@ -26,20 +26,22 @@ def _set_shared(*args) -> None:
 
 
 @contextmanager
-def _pool(jobs: int, args: tuple):
+def pool(jobs: int, args: tuple = ()):
+    """A pool of `jobs` spawned workers whose tasks read `shared()` for `args`; every worker (and the
+    resource tracker, if this pool started it) has ended when the block ends."""
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
     from multiprocessing import resource_tracker
 
     tracker = resource_tracker._resource_tracker
     tracker_was_running = getattr(tracker, "_fd", None) is not None
-    pool = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn"),
-                               initializer=_set_shared, initargs=args)
+    executor = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("spawn"),
+                                   initializer=_set_shared, initargs=args)
     try:
-        yield pool
+        yield executor
     finally:
-        pool.shutdown(wait=True, cancel_futures=True)
-        del pool
+        executor.shutdown(wait=True, cancel_futures=True)
+        del executor
         gc.collect()  # the pool's queues release their semaphores (a release would restart the tracker)
         if not tracker_was_running and hasattr(tracker, "_stop"):
             tracker._stop()
@@ -48,5 +50,5 @@ def _pool(jobs: int, args: tuple):
 def run(task: Callable, items: Iterable, jobs: int, args: tuple = (), chunksize: int = 1) -> Iterator:
     """`task(item)` for each item in `jobs` processes, results in order; `task` reads `shared()` for
     `args`. Every worker has ended when the iteration ends, or when it is abandoned."""
-    with _pool(jobs, args) as pool:
-        yield from pool.map(task, items, chunksize=chunksize)
+    with pool(jobs, args) as executor:
+        yield from executor.map(task, items, chunksize=chunksize)

@@ -117,21 +117,26 @@ def _skipped(path: Path, directory: Path) -> str:
     return ""
 
 
+def read_one(path: Path) -> tuple[Submission | None, str]:
+    """An answer file read, or None and why it cannot be."""
+    try:
+        return read_submission(path), ""
+    except SubmissionError as exc:
+        return None, (f"line {exc.line}: {exc.detail}" if exc.line else exc.detail)
+
+
 def collect(directory: Path, roster: list[Student] | None = None, *, assignment: str = "",
-            codes: dict[str, str] | None = None) -> tuple[list[Entry], list[FileProblem]]:
+            codes: dict[str, str] | None = None, read_all=None) -> tuple[list[Entry], list[FileProblem]]:
     """Every student to grade (roster order, else by id) and every file not graded, with why.
-    `codes` are the sheet codes issued (by student id); `assignment` the id the files must answer."""
+    `codes` are the sheet codes issued (by student id); `assignment` the id the files must answer;
+    `read_all(paths)` gives read_one of each path, in order (by default here, one after another)."""
     directory = Path(directory)
     known = {s.id: s for s in roster} if roster is not None else None
     files, problems = answer_files(directory)
     found: dict[str, list[Entry]] = {}
     claimed: dict[str, list[str]] = {}  # files no one's by their place that name a student inside
-    for path in files:
+    for path, (submission, error) in zip(files, (read_all or _read_each)(files)):
         owner, why_not = whose(path.relative_to(directory), known)
-        try:
-            submission, error = read_submission(path), ""
-        except SubmissionError as exc:
-            submission, error = None, (f"line {exc.line}: {exc.detail}" if exc.line else exc.detail)
         if not owner:  # say what the file holds, to help whoever sorts it out
             inside = (f" (it says `student: {shown(submission.student, 40)}` inside)" if submission and
                       submission.student else f" (and it cannot be read: {error})" if error else "")
@@ -155,6 +160,10 @@ def collect(directory: Path, roster: list[Student] | None = None, *, assignment:
     else:
         entries.sort(key=lambda e: e.student.id)
     return entries, problems
+
+
+def _read_each(paths: list[Path]):
+    return map(read_one, paths)
 
 
 def whose(relative: Path, known: dict[str, Student] | None) -> tuple[str, str]:

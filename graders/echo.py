@@ -11,6 +11,7 @@ _DROPPED = {"Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp"}
 ELLIPSIS = "\u2026"
 #: Characters a Markdown code span (a backtick) or HTML (a tag) would read as syntax, swapped for look-alikes.
 LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
+_ASCII_CONTROLS = {c: " " for c in [*range(32), 127]}
 
 
 def shown(text, limit: int = 80, word: int | None = None) -> str:
@@ -22,7 +23,10 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
         text = re.sub(rf"\S{{{word + 1},}}", lambda m: m.group()[:word] + ELLIPSIS, text)
     if len(text) > 8 * limit:  # never scan more than needed: a 1 MB answer costs what a short one does
         text = text[: 8 * limit] + ELLIPSIS
-    cleaned = "".join(" " if unicodedata.category(c) in _DROPPED else c for c in text)
+    if text.isascii():  # of ASCII, only the controls are dropped
+        cleaned = text.translate(_ASCII_CONTROLS)
+    else:
+        cleaned = "".join(" " if unicodedata.category(c) in _DROPPED else c for c in text)
     cleaned = " ".join(cleaned.split())
     return cleaned if len(cleaned) <= limit else cleaned[: limit - 1].rstrip() + ELLIPSIS
 

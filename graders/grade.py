@@ -7,11 +7,13 @@ and stops before any mark if not (unless forced, and then the batch carries the 
 """
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import inspect
 from pathlib import Path
 from typing import Callable, Iterable, Mapping
 
+from exgen import parallel
 from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet, load_roster
 from exgen.bank import Bank
 from exgen.errors import ExgenError
@@ -20,7 +22,7 @@ from exgen.variant import Variant
 
 from .answers import Submission
 from .echo import shown
-from .collect import Entry, collect
+from .collect import Entry, collect, read_one
 from .marking import QuestionMarker
 from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, PROBLEM_FILE, UNREADABLE_FILE, BatchResult, Column,
                       FileProblem, QuestionResult, SheetResult)
@@ -41,6 +43,9 @@ FORCED = "Graded with --force although {problem}"
 NOT_ISSUED = "{student} was not issued a sheet ({manifest})"
 
 Progress = Callable[[Iterable, int], Iterable]
+#: A class at least this large is read and graded in worker processes (with jobs > 1): starting them
+#: costs about as much as grading a hundred or two files.
+PARALLEL_FROM = 200
 
 
 def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
@@ -74,7 +79,7 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
 
 def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir: Path, *, secret_source: str = "",
                  force: bool = False, roster: list[Student] | None = None,
-                 progress: Progress | None = None) -> BatchResult:
+                 progress: Progress | None = None, jobs: int = 1) -> BatchResult:
     """Grade the answers to what a manifest records: its questions, its roster (or the part of it given),
     its sheet codes. A different secret, a changed template or solver, or a student never issued a sheet
     stops the run with ManifestError before any mark, unless `force`d (then the batch carries warnings)."""
@@ -85,30 +90,57 @@ def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir:
     if problems and not force:
         raise ManifestError(manifest.path, MISMATCH.format(problems="; ".join(problems)))
     batch = grade_batch(manifest.assignment, bank, secret, submissions_dir, roster=students, progress=progress,
-                        codes=manifest.codes)
+                        codes=manifest.codes, jobs=jobs)
     return dataclasses.replace(batch, warnings=tuple(FORCED.format(problem=p) for p in problems))
 
 
 def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_dir: Path,
                 roster: list[Student] | Path | None = None, progress: Progress | None = None,
-                codes: dict[str, str] | None = None) -> BatchResult:
+                codes: dict[str, str] | None = None, jobs: int = 1) -> BatchResult:
     """Grade every answer file in a directory; one broken file never stops the rest. `codes` are the
-    sheet codes issued, by student (from the manifest); without them each sheet's own code is used."""
+    sheet codes issued, by student (from the manifest); without them each sheet's own code is used.
+    With jobs > 1 and at least PARALLEL_FROM files, they are read and graded in that many processes
+    (the same results, in the same order)."""
     if isinstance(roster, (str, Path)):
         roster = load_roster(Path(roster))
     columns = tuple(Column(i, spec.slot, spec.template, spec.points or bank.get(spec.template).points)
                     for i, spec in enumerate(assignment.questions, start=1))
     max_points = sum(c.max_points for c in columns)
-    entries, problems = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes)
-    loop = _with_progress(progress, entries)
+    shared = (assignment, bank, secret, max_points, codes or {})
+    with contextlib.ExitStack() as stack:
+        workers = []
+
+        def read_all(paths):  # the pool starts once there are enough files to pay for it
+            if jobs > 1 and len(paths) >= PARALLEL_FROM:
+                workers.append(stack.enter_context(parallel.pool(jobs, shared)))
+                return workers[0].map(read_one, paths, chunksize=32)
+            return map(read_one, paths)
+
+        entries, problems = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes,
+                                    read_all=read_all)
+        if workers:
+            graded = workers[0].map(_grade_in_worker, entries, chunksize=16)
+        else:
+            graded = (_grade_entry(entry, *shared[:-1], shared[-1].get(entry.student.id)) for entry in entries)
+        sheets = _gather(_with_progress(progress, graded, len(entries)), entries, problems, submissions_dir)
+    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir))
+
+
+def _grade_in_worker(entry: Entry) -> SheetResult:
+    assignment, bank, secret, max_points, codes = parallel.shared()
+    return _grade_entry(entry, assignment, bank, secret, max_points, codes.get(entry.student.id))
+
+
+def _gather(graded: Iterable[SheetResult], entries: list[Entry], problems: list[FileProblem],
+            submissions_dir: Path) -> list[SheetResult]:
+    """The sheets' results in entry order; a sheet that could not be rebuilt is also a problem file."""
     sheets = []
-    for entry in loop:
-        sheet_result = _grade_entry(entry, assignment, bank, secret, max_points, (codes or {}).get(entry.student.id))
+    for entry, sheet_result in zip(entries, graded):
         if sheet_result.status == NOT_GRADED:
             problems.append(FileProblem(entry.path or Path(submissions_dir), sheet_result.warnings[-1],
                                         entry.student.id))
         sheets.append(sheet_result)
-    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir))
+    return sheets
 
 
 def grade_variant(variant: Variant, answers: Mapping[str, str]) -> QuestionResult:
@@ -118,15 +150,15 @@ def grade_variant(variant: Variant, answers: Mapping[str, str]) -> QuestionResul
     return QuestionMarker(question).mark({parts[_norm(k)]: v for k, v in answers.items() if _norm(k) in parts})
 
 
-def _with_progress(progress: Progress | None, entries: list) -> Iterable:
+def _with_progress(progress: Progress | None, items: Iterable, total: int) -> Iterable:
     """`progress(iterable, total)`; a wrapper that also wants a label gets "grading"."""
     if progress is None:
-        return entries
+        return items
     try:
         wanted = len(inspect.signature(progress).parameters)
     except (TypeError, ValueError):
         wanted = 2
-    return progress(entries, len(entries), "grading") if wanted >= 3 else progress(entries, len(entries))
+    return progress(items, total, "grading") if wanted >= 3 else progress(items, total)
 
 
 def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float,

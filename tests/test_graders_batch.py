@@ -179,3 +179,15 @@ def test_one_hostile_file_never_stops_the_batch(bank, tmp_path, name, payload):
     assert [(s.student.id, s.status) for s in batch.sheets] == [("s000", GRADED), ("s001", UNREADABLE_FILE)]
     assert batch.sheets[0].percent == pytest.approx(100)
     assert [p.path.name for p in batch.problems] == [name] and batch.problems[0].reason
+
+
+def test_a_large_class_graded_in_worker_processes_gets_the_same_results(bank, handed_in, monkeypatch):
+    """Every kind of file of the fixture (right, partly right, broken, duplicated, foldered, a stranger's),
+    read and graded by two workers, gives what one process gives, in the same order."""
+    import graders.grade
+
+    alone = grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER)
+    monkeypatch.setattr(graders.grade, "PARALLEL_FROM", 2)  # this small class counts as large
+    shared = grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER, jobs=2)
+    assert shared == alone
+    assert [s.status for s in shared.sheets].count(GRADED) >= 3

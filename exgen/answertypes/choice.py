@@ -17,6 +17,7 @@ MAX_CHOICE_LENGTH = 80
 WRONG_CHOICE = "not the right choice"
 
 
+@lru_cache(maxsize=4096)
 def canonical(name: str) -> str:
     """'Crossed belt', 'crossed-belt' and ' CROSSED_belt ' all read as 'crossed belt'."""
     return " ".join(str(name).replace("-", " ").replace("_", " ").lower().split())

@@ -98,7 +98,7 @@ def _brackets(excess: TrigTorque, grid: list[float]) -> list[int]:
     import numpy as np
 
     theta = np.array(grid)
-    values = np.full(len(grid), excess.mean)
+    values = np.full(len(grid), float(excess.mean))
     for n, s, c in excess.terms:
         values += s * np.sin(n * theta) + c * np.cos(n * theta)
     near = np.abs(values) <= 1e-9 * (abs(excess.mean) + sum(abs(s) + abs(c) for _, s, c in excess.terms))
