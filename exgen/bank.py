@@ -61,18 +61,22 @@ def bank_dirs(extra: list[Path] | None = None) -> list[Path]:
     return [Path(str(resources.files("exgen.banks")))] + from_env + list(extra or [])
 
 
-def load_bank(extra: list[Path] | None = None) -> Bank:
-    return _load_bank(tuple(bank_dirs(extra)))
+def load_bank(extra: list[Path] | None = None, full: bool = True) -> Bank:
+    """Every template of the bank. `full` False leaves out the checks that import code or parse text
+    (that each solver and figure function exists, that texts name only parameters, that reported units
+    are units): a command that reads titles or draws one template starts without importing them all,
+    and a mistake there is reported when the template is used, or by `exgen validate`."""
+    return _load_bank(tuple(bank_dirs(extra)), full)
 
 
 @lru_cache(maxsize=8)
-def _load_bank(dirs: tuple[Path, ...]) -> Bank:
+def _load_bank(dirs: tuple[Path, ...], full: bool = True) -> Bank:
     templates: dict[str, Template] = {}
     errors: list[TemplateError] = []
     for directory in dirs:
         for path in sorted(directory.rglob("*.yaml")):
             try:
-                template = load_template(path)
+                template = load_template(path, full)
             except BankError as exc:
                 errors.extend(exc.errors)
                 continue
@@ -85,15 +89,15 @@ def _load_bank(dirs: tuple[Path, ...]) -> Bank:
     return Bank(templates)
 
 
-def load_template(path: Path) -> Template:
-    """Read one template file, raising BankError with every problem found in it."""
+def load_template(path: Path, full: bool = True) -> Template:
+    """Read one template file, raising BankError with every problem found in it (`full`: see load_bank)."""
     raw = path.read_bytes()
     try:
         root, data = _parse(raw.decode("utf-8"))
     except (UnicodeDecodeError, yaml.YAMLError) as exc:
         line = getattr(getattr(exc, "problem_mark", None), "line", None)
         raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
-    reader = _Reader(path, root)
+    reader = _Reader(path, root, full)
     template = reader.template(data, data_digest(_issued(data)))
     if reader.errors:
         raise BankError(reader.errors)
@@ -130,8 +134,8 @@ def _is_text(spec: ParamSpec) -> bool:
 class _Reader:
     """Turns parsed YAML into a Template, collecting errors with their lines."""
 
-    def __init__(self, path: Path, root):
-        self.path, self.root, self.errors = path, root, []
+    def __init__(self, path: Path, root, full: bool = True):
+        self.path, self.root, self.errors, self.full = path, root, [], full
 
     def error(self, keypath: tuple, message: str) -> None:
         key = ".".join(str(k) for k in keypath)
@@ -335,7 +339,8 @@ class _Reader:
                 continue
             unit = str(item.get("unit", ""))
             try:
-                units.unit_info(unit)
+                if self.full:
+                    units.unit_info(unit)
             except QuantityError as exc:
                 self.error(where + ("unit",), str(exc))
                 continue
@@ -356,6 +361,11 @@ class _Reader:
         if not attr or not module_name.isidentifier():
             self.error(where, f"must be 'module:function' naming a function in exgen.{package}")
             return None
+        if not self.full:  # the module's file is there; its function is looked up when first used
+            if not (Path(__file__).parent / package / f"{module_name}.py").is_file():
+                self.error(where, f"no module exgen.{package}.{module_name}")
+                return None
+            return str(ref)
         try:
             module = importlib.import_module(f"exgen.{package}.{module_name}")
         except ImportError:
@@ -367,6 +377,8 @@ class _Reader:
         return str(ref)
 
     def check_text(self, text: str, names: set, where) -> None:
+        if not self.full:
+            return
         try:
             unknown = undeclared_names(text) - names
         except ValueError as exc:

@@ -25,10 +25,11 @@ def _progress(items, total, label="working"):
     return progress(items, total, label)
 
 
-def _bank(args):
+def _bank(args, full: bool = True):
+    """The bank; `full` False for commands that only list or draw (see exgen.bank.load_bank)."""
     from .bank import load_bank
 
-    return load_bank([Path(p) for p in args.bank])
+    return load_bank([Path(p) for p in args.bank], full)
 
 
 def _count(minimum: int, maximum: int | None = None):
@@ -87,7 +88,7 @@ def _assignment_and_roster(args):
 def cmd_list(args) -> int:
     from .render.unicode_math import text_to_plain
 
-    bank = _bank(args)
+    bank = _bank(args, full=False)
     rows = [t for t in bank if args.chapter is None or t.chapter == args.chapter]
     width = max((len(t.id) for t in rows), default=0)
     for t in rows:
@@ -101,7 +102,7 @@ def cmd_show(args) -> int:
     from .render.text import variant_text
     from .variant import make_variant
 
-    template = _bank(args).get(args.id)
+    template = _bank(args, full=False).get(args.id)
     seed = args.seed if args.seed is not None else secrets.randbits(32)
     print(variant_text(make_variant(template, seed), key=args.key))
     if args.seed is None:

@@ -4,23 +4,24 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-import jinja2
-import jinja2.meta
-
 
 @lru_cache(maxsize=1)
-def environment() -> jinja2.Environment:
+def environment():
+    import jinja2  # only for texts with more than {{ name }} in them: most commands never need it
+
     return jinja2.Environment(undefined=jinja2.StrictUndefined, autoescape=False,
                               keep_trailing_newline=False, trim_blocks=True, lstrip_blocks=True)
 
 
 @lru_cache(maxsize=1024)
-def _compile(text: str) -> jinja2.Template:
+def _compile(text: str):
     return environment().from_string(text)
 
 
 def undeclared_names(text: str) -> set[str]:
     """Names a text refers to; raises ValueError on a Jinja syntax error."""
+    import jinja2.meta
+
     try:
         return set(jinja2.meta.find_undeclared_variables(environment().parse(text)))
     except jinja2.TemplateSyntaxError as exc:

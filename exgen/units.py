@@ -16,6 +16,7 @@ from importlib import resources
 
 from .errors import DimensionError, QuantityError
 
+UNIT_TABLE = "data/unit_table.tsv"
 MAX_ANSWER_LENGTH = 80
 MAX_UNIT_LENGTH = 40
 _ANGLE_UNITS = ("radian",)
@@ -84,9 +85,32 @@ class UnitInfo:
 
 @lru_cache(maxsize=512)
 def unit_info(text: str) -> UnitInfo:
-    """Look a unit up once; raise QuantityError if pint does not know it."""
+    """Look a unit up once; raise QuantityError if pint does not know it. The units the bank uses are
+    read from pint's answers stored in data/unit_table.tsv, so drawing and showing a problem need not
+    build pint's registry (a third of a second); any other unit asks pint."""
     if not text or text in ("1", "dimensionless"):
         return UnitInfo("", 1.0, "dimensionless", 0)
+    known = _unit_table().get(text)
+    return known if known is not None else _ask_pint(text)
+
+
+@lru_cache(maxsize=1)
+def _unit_table() -> dict[str, UnitInfo]:
+    text = resources.files("exgen").joinpath(UNIT_TABLE).read_text("utf-8")
+    rows = (line.split("\t") for line in text.splitlines() if line and not line.startswith("#"))
+    return {unit: UnitInfo(unit, float(factor), dims, int(angle)) for unit, factor, dims, angle in rows}
+
+
+def unit_table(names) -> str:
+    """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.units`)."""
+    lines = ["# unit, factor to coherent SI, dimension, angles: pint's answers, stored (python -m exgen.units)"]
+    for name in sorted(set(names) - {"", "1", "dimensionless"}):
+        info = _ask_pint(name)
+        lines.append(f"{name}\t{info.factor!r}\t{info.dims}\t{info.angle}")
+    return "\n".join(lines) + "\n"
+
+
+def _ask_pint(text: str) -> UnitInfo:
     ureg = registry()
     try:
         unit = ureg.parse_units(normalise_unit(text))
@@ -236,3 +260,26 @@ def format_quantity(value: float, unit: str, sig: int = 4) -> str:
     if not shown:
         return number
     return f"{number}{shown}" if shown in ("\u00b0", "%") else f"{number} {shown}"
+
+
+#: Units stored beside those the bank's templates use: what students commonly type.
+COMMON_UNITS = ("N", "kN", "MN", "N*m", "kN*m", "Nm", "W", "kW", "MW", "J", "kJ", "m", "mm", "cm", "km", "s",
+                "min", "h", "kg", "g", "t", "rpm", "rev/min", "rad/s", "rad/s^2", "Hz", "deg", "rad", "m/s",
+                "m/s^2", "km/h", "Pa", "kPa", "MPa", "GPa", "N/m", "kN/m", "N/mm", "kg*m^2", "kg*m", "%")
+
+
+def bank_units(bank) -> set[str]:
+    """Every unit a bank's templates write: parameters, parts and reported quantities."""
+    found = set(COMMON_UNITS) | set(_KIND_EXAMPLES)
+    for template in bank:
+        found |= {p.unit for p in template.params} | {p.unit for p in template.parts}
+        found |= {r.unit for r in template.report}
+    return found
+
+
+if __name__ == "__main__":  # python -m exgen.units: rewrite the stored table from pint and the bank
+    from pathlib import Path
+
+    from .bank import load_bank
+
+    Path(__file__).parent.joinpath(UNIT_TABLE).write_text(unit_table(bank_units(load_bank())), encoding="utf-8")

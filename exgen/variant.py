@@ -13,7 +13,7 @@ from .answertypes import answer_type
 from .answertypes.base import MISTAKE_GAP
 from .derivation import PLACEHOLDER, Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
-from .errors import DrawError, ExgenError, InvalidDraw
+from .errors import DrawError, ExgenError, InvalidDraw, TemplateError
 from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
 from .template import PartSpec, Template
 from .text import render_text
@@ -90,10 +90,19 @@ class Variant:
     def _texts(self) -> tuple[str, Mapping[str, str], frozenset[str]]:
         printed: set[str] = set()
         context = {p.name: _Watched(p, printed) for p in self.params}
-        statement = render_text(self.template.statement, context)
-        asks = MappingProxyType({p.id: render_text(p.ask, context) for p in self.template.parts})
+        statement = self._text(self.template.statement, "statement", context)
+        asks = MappingProxyType({p.id: self._text(p.ask, f"parts.{p.id}.ask", context) for p in self.template.parts})
         used = printed | self.worked_uses
         return statement, asks, frozenset(p.name for p in self.params if p.name not in used)
+
+    def _text(self, text: str, key: str, context: dict) -> str:
+        try:
+            return render_text(text, context)
+        except Exception as exc:
+            if not type(exc).__module__.startswith("jinja2"):
+                raise
+            # a text that a bank loaded without its full check let through (exgen.bank.load_bank)
+            raise TemplateError(self.template.path, key, f"cannot be written: {exc}") from None
 
     def param(self, name: str) -> ParamValue:
         return next(p for p in self.params if p.name == name)
@@ -114,7 +123,10 @@ class Variant:
 def resolve(reference: str, package: str):
     """'belts:flat_belt_power' -> the function exgen.<package>.belts.flat_belt_power."""
     module_name, _, attr = reference.partition(":")
-    return getattr(importlib.import_module(f"exgen.{package}.{module_name}"), attr)
+    try:
+        return getattr(importlib.import_module(f"exgen.{package}.{module_name}"), attr)
+    except (ImportError, AttributeError):  # a bank loaded without its full check (exgen.bank.load_bank)
+        raise ExgenError(f"{reference!r}: exgen.{package}.{module_name} has no function {attr!r}") from None
 
 
 def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES, rejected=None) -> Variant:

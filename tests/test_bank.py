@@ -122,3 +122,23 @@ def test_packaged_bank_loads(bank):
     assert {t.id for t in bank} >= {
         "belts.flat_belt_power", "belts.v_belt_power", "belts.driven_pulley_diameter", "belts.driven_speed_slip",
         "belts.compound_drive", "belts.drive_geometry", "belts.max_power", "belts.v_belt_count"}
+
+
+def test_a_light_load_leaves_code_and_texts_to_the_full_check_and_to_first_use(tmp_path):
+    """`exgen list` and `show` load the bank without importing solvers or parsing texts: a wrong function
+    or name passes the light load, fails the full one (validate, generate, grade), and is named when used."""
+    from exgen.errors import ExgenError, TemplateError
+    from exgen.variant import make_variant
+
+    path = write(tmp_path, GOOD.replace("{{ d1 }}.", "{{ d3 }}."))
+    assert any("unknown parameter(s): d3" in p for p in problems(path))
+    light = load_template(path, full=False)
+    with pytest.raises(TemplateError, match=r"t\.yaml: statement: cannot be written: 'd3' is undefined"):
+        make_variant(light, 1).statement
+
+    path = write(tmp_path, GOOD.replace("belts:driven_speed", "belts:no_such"))
+    assert any("has no function 'no_such'" in p for p in problems(path))
+    with pytest.raises(ExgenError, match="exgen.solvers.belts has no function 'no_such'"):
+        make_variant(load_template(path, full=False), 1)
+    with pytest.raises(BankError, match="no module exgen.solvers.nowhere"):
+        load_template(write(tmp_path, GOOD.replace("belts:driven_speed", "nowhere:f")), full=False)

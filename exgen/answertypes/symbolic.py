@@ -15,8 +15,6 @@ import math
 from functools import lru_cache
 from typing import Mapping
 
-import numpy as np
-
 from ..errors import InvalidDraw
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report
@@ -213,6 +211,8 @@ def _values(expression: Expression, ranges: tuple) -> tuple[float | None, ...]:
 def _points(ranges: tuple) -> tuple[dict[str, float], ...]:
     """POINTS sets of values, log-uniform in each symbol's range; the same in any process on any day."""
     seed = int.from_bytes(hashlib.sha256(repr(ranges).encode()).digest()[:8], "big")
+    import numpy as np  # only where formulas are compared: reading the bank does not need it
+
     rng = np.random.Generator(np.random.PCG64(seed))
     draws = {name: np.exp(rng.uniform(math.log(low), math.log(high), POINTS)) for name, low, high in ranges}
     return tuple({name: float(values[i]) for name, values in draws.items()} for i in range(POINTS))

@@ -10,8 +10,6 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-import tex2typst
-
 from ..errors import ExgenError
 from .unicode_math import split_math, unescape_dollars
 
@@ -37,6 +35,8 @@ def latex_to_typst(latex: str) -> str:
     """LaTeX math (without the dollars) -> Typst math (without the dollars)."""
     if not latex.strip():
         return ""
+    import tex2typst  # only for Typst output: the terminal and Markdown never load it
+
     try:
         return tex2typst.tex2typst(latex)
     except ValueError as exc:
