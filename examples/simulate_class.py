@@ -71,7 +71,7 @@ def named_mistake(question, part) -> tuple[str, str] | None:
     for spec in part.mistakes:
         if spec.when in values:
             value = values[spec.when]
-            found = template_mistake(part, value, [values], lambda g, e: answer_type(part).matches(g, e, part))
+            found = template_mistake(part, value, [values], lambda g, e, w=1.0: answer_type(part).matches(g, e, part, w))
             return answer_text(part, value), found.name if found else spec.when
     return None
 

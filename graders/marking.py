@@ -68,8 +68,8 @@ class QuestionMarker:
             return result.make(UNREADABLE, _format_problem(part, str(exc)))
         self.readings[part.id] = given
 
-        def matches(value, expected) -> bool:
-            return kind.matches(value, expected, part)
+        def matches(value, expected, widen: float = 1.0) -> bool:
+            return kind.matches(value, expected, part, widen)
 
         if _safe(matches, given.value, answer.value):
             self.right.add(part.id)

@@ -15,21 +15,35 @@ from exgen.errors import ExgenError
 from exgen.mistake_messages import message_for
 from exgen.template import PartSpec
 
-Matcher = Callable[[Any, Any], bool]
+#: (given, expected, widen) -> whether given is expected within the part's tolerance times widen.
+Matcher = Callable[..., bool]
+#: The tolerances, as fractions of the part's, that tell apart slips whose values are close together.
+NARROWING = (0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625)
 
 
 def template_mistake(part: PartSpec, value: Any, recorded: Iterable[Mapping[str, Any]],
                      matches: Matcher) -> Mistake | None:
-    """The first recorded mistake value the answer matches: those the template lists, in its order,
-    then any others the solver records."""
+    """The recorded mistake the answer matches: those the template lists, in its order, then any others
+    the solver records. Where the values of several lie within the tolerance of the answer (two slips that
+    land 0.5 % apart), the one the answer stays close to as the tolerance narrows is named, so that a
+    student who typed one slip's value to four figures is not told of the other; equal values name the
+    first listed."""
     recorded = [r for r in recorded if r]
     says = {m.when: m.say for m in part.mistakes}
     names = list(says) + [n for r in recorded for n in r if n not in says]
-    for name in dict.fromkeys(names):
-        for values in recorded:
-            if name in values and _safe_match(matches, value, values[name]):
-                return Mistake(name, message_for(name, says.get(name, "")))
-    return None
+    candidates = [(name, values[name]) for name in dict.fromkeys(names) for values in recorded
+                  if name in values and _safe_match(matches, value, values[name])]
+    for widen in NARROWING:
+        if len(candidates) < 2:
+            break
+        closer = [(name, v) for name, v in candidates if _safe_match(matches, value, v, widen)]
+        if not closer:
+            break
+        candidates = closer
+    if not candidates:
+        return None
+    name = candidates[0][0]
+    return Mistake(name, message_for(name, says.get(name, "")))
 
 
 def generic_mistake(part: PartSpec, given: Given, expected: Any) -> Mistake | None:
@@ -40,8 +54,8 @@ def generic_mistake(part: PartSpec, given: Given, expected: Any) -> Mistake | No
         return None
 
 
-def _safe_match(matches: Matcher, given, expected) -> bool:
+def _safe_match(matches: Matcher, given, expected, widen: float = 1.0) -> bool:
     try:
-        return bool(matches(given, expected))
+        return bool(matches(given, expected, widen))
     except (TypeError, ValueError, ArithmeticError):
         return False
