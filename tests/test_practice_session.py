@@ -139,6 +139,16 @@ def test_the_default_hints_are_the_steps_towards_the_part_then_its_formula_witho
     assert later[0].line.name == worked.lines[answered_b + 1].name
 
 
+def test_a_step_the_part_is_not_worked_from_is_no_hint(practice):
+    """The slip is worked out first, but the speed without slip does not use it: its hint is the formula."""
+    problem = practice.next_problem(Scope("template", "belts.driven_speed_slip"))
+    worked = practice.worked(problem)
+    assert worked.lines[0].name == "G" and not worked.lines[0].parts
+    assert [h.line.name for h in practice.hints(problem, "a")] == ["N2_ideal"]
+    with_slip = practice.hints(problem, "b")
+    assert with_slip[-1].line.name == "N2_slip" and with_slip[-1].line.values == ()
+
+
 def test_hints_and_the_solution_cost_credit(practice):
     scope = Scope("template", "belts.driven_speed_slip")
     clean = practice.next_problem(scope)
