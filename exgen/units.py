@@ -48,7 +48,8 @@ def registry():
 
 
 @lru_cache(maxsize=1)
-def _aliases() -> dict[str, str]:
+def aliases() -> dict[str, str]:
+    """How people write units (`Nm`, `rev/min`) and what pint should read instead (data/unit_aliases.txt)."""
     text = resources.files("exgen").joinpath("data/unit_aliases.txt").read_text("utf-8")
     pairs = (line.split("=", 1) for line in text.splitlines() if line.strip() and not line.startswith("#"))
     return {a.strip(): b.strip() for a, b in pairs}
@@ -66,7 +67,7 @@ def normalise_unit(text: str) -> str:
     text = text.replace("\u00b0C", "degC").replace("\u00b0", "degree")
     text = _HYPHEN_PRODUCT.sub("*", text)
     compact = text.replace(" ", "")
-    return _aliases().get(compact, text)
+    return aliases().get(compact, text)
 
 
 @dataclass(frozen=True)

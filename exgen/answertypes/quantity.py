@@ -32,7 +32,42 @@ def read_quantity(text: str) -> units.Reading:
 
 
 def in_unit(text: str, unit: str) -> tuple[units.Reading, float]:
-    """One quantity, converted to `unit` (a bare number is already in it)."""
+    """One quantity, converted to `unit` (a bare number is already in it). A unit that cannot be read,
+    or reads as another kind, but differs only in letter case from one unit of the asked kind is read
+    as that unit: "1.2 KN", "12.8 kw", "3.2 hz", "62 NM", "5.2 M/S" (pint would take M for molar); never
+    an m for M or M for m before a unit ("12.8 mw": milli or mega)."""
+    try:
+        return _in_unit(text, unit)
+    except (QuantityError, WrongKind):
+        meant = _case_meant(text, unit)
+        if meant is None:
+            raise
+        return _in_unit(meant, unit)
+
+
+def _case_meant(text: str, unit: str) -> str | None:
+    """The answer with its unit written in the case of the one unit of the asked family it matches
+    ignoring case; None when no unit or more than one (mW and MW) does."""
+    typed = text.rstrip()
+    family = next((f for f in unit_families() if unit in f), (unit,)) if unit else ()
+    names = [name for name, _ in accepted_units(unit)]
+    names += [written for written, meant in units.aliases().items() if meant.replace(" ", "") in family]
+    found = {name for name in names if len(name) < len(typed)
+             and typed[-len(name):].casefold() == name.casefold() and typed[-len(name):] != name
+             and (typed[-len(name) - 1].isdigit() or typed[-len(name) - 1] in " .")
+             and not _milli_or_mega(typed[-len(name):], name, names)}
+    if len({units.normalise_unit(name).replace(" ", "*") for name in found}) != 1:
+        return None
+    name = min(found)
+    return typed[:-len(name)] + name
+
+
+def _milli_or_mega(typed: str, name: str, names) -> bool:
+    """Whether the case slip is in an m or M before a unit: milli or mega, which nobody can tell."""
+    return typed[0] != name[0] and name[0] in "mM" and name[1:].lstrip(" *") in names
+
+
+def _in_unit(text: str, unit: str) -> tuple[units.Reading, float]:
     reading = read_quantity(text)
     if reading.unit is None:
         value = reading.value
@@ -69,9 +104,13 @@ def with_article(kind: str) -> str:
 
 
 def wrong_kind_message(given_unit: str, asked_unit: str) -> str:
-    """"'m' is a length, but a force is asked (in N)": both kinds named in words."""
+    """"'m' is a length, but a force is asked (in N)": both kinds named in words. A unit that measures
+    nothing a student would name ('MM' reads as megamolar) is said to be no unit of the asked kind."""
     given, asked = kind_of(given_unit), kind_of(asked_unit)
     where = f" (in {unit_name(asked_unit)})" if asked_unit else ""
+    if given.startswith("quantity of dimension"):
+        return (f"'{given_unit}' is not a unit of {asked}: {with_article(asked)} is asked{where}, and unit "
+                f"symbols are read with their capitals (m is milli, M is mega)")
     return f"'{given_unit}' is {with_article(given)}, but {with_article(asked)} is asked{where}"
 
 
