@@ -34,7 +34,8 @@ _BIG_POWER = re.compile(rf"{_POWER}\s*\(?\s*[+-]?\s*\d{{2,}}")
 _POWER_TOWER = re.compile(rf"{_POWER}[^A-Za-z]*?{_POWER}")  # m^9^9^9: pint would compute it
 _HYPHEN_PRODUCT = re.compile(r"(?<=[A-Za-z])-(?=[A-Za-z])")  # N-m, kg-m^2, lbf-ft: a product
 _CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]")
-_LABEL = re.compile(r"^\s*[A-Za-z\u0370-\u03ff][A-Za-z0-9_\u0370-\u03ff ]{0,11}=\s*")
+# "F = ", "θ ≈ ", "= ", "~": a label or an "about" before the number is no part of the answer
+_LABEL = re.compile(r"^\s*(?:[A-Za-z\u0370-\u03ff][A-Za-z0-9_\u0370-\u03ff ]{0,11})?[=\u2248~]\s*")
 _SUPERSCRIPTS = re.compile("[\u207a\u207b]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+")
 _PLAIN_DIGITS = str.maketrans("\u207a\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079", "+-0123456789")
 

@@ -18,6 +18,10 @@ from exgen.units import convert, format_number, format_quantity, parse_quantity,
     ("168.8\u00b0", 168.8, "\u00b0"),
     ("\u03b8 = 168.8 deg", 168.8, "deg"),
     ("v = 5.24 m/s", 5.24, "m/s"),
+    ("= 1200 N", 1200.0, "N"),               # an equals sign, an "about" before the number
+    ("\u2248 5.24 m/s", 5.24, "m/s"),
+    ("~5.24 m/s", 5.24, "m/s"),
+    ("F \u2248 1.2 kN", 1.2, "kN"),
     ("5 %", 5.0, "%"),
     ("3,5", 3.5, None),                      # decimal comma
     ("12 893 W", 12893.0, "W"),              # digit groups
