@@ -21,6 +21,9 @@ def grade(variant, text):
     "572.9 kg mm at 48 deg", "572.9 kg·mm at 48°", "0.5729 kg m @ 48", "572.9 at 48.3", "572.9∠48",
     "572.9 at -312", "572.9 at 408 deg", "remove 572.9 at 228", "Remove 572.9 kg mm at 228°", "-572.9 at 228",
     "572.9 at 0.8378 rad",
+    # a pair, as written in working: the angle carries its unit
+    "(572.9 kg mm, 48°)", "572.9 kg mm, 48 deg", "mr = 572.9 kg mm; θ = 48°", "572.9 kg mm 48°", "0,5729 kg m, 48°",
+    "remove 572.9 kg mm, 228°",
 ])
 def test_equivalent_answers_are_right(variant, text):
     assert variant.answers["a"].text == "572.9 kg\u00b7mm at 48.00\u00b0"
@@ -47,7 +50,8 @@ def test_scalar_sum_is_named(variant):
     assert result.mistake == "scalar_sum"
 
 
-@pytest.mark.parametrize("text", ["572.9", "at 48", "572.9 at", "572.9 kg at 48", "572.9 at 48 m"])
+@pytest.mark.parametrize("text", ["572.9", "at 48", "572.9 at", "572.9 kg at 48", "572.9 at 48 m", "572.9, 48",
+                                  "572.9 48", "1 2 48°"])
 def test_incomplete_or_wrong_kind(variant, text):
     result = grade(variant, text)
     assert result.points == 0 and result.status in ("unreadable", "wrong")

@@ -23,6 +23,11 @@ from .quantity import in_unit
 
 _POLAR = re.compile(r"(?:(add|remove|subtract|take away)\s+)?(.+?)\s*(?:\bat\b|@|\u2220|<)\s*(.+)", re.IGNORECASE)
 _REMOVE = ("remove", "subtract", "take away")
+# Also a pair, as written in working: "(0.57 kg, 48°)", "m = 0.57 kg; θ = 48°", "0.57 kg 48°". The angle
+# must carry its unit, so that a decimal comma ("0,57 kg at 48°") is never taken for the separator.
+_ANGLE_LAST = r"(?:[^\W\d_]{1,3}\s*=\s*)?[+\-\u2212]?(?:\d+\.?\d*|\.\d+)\s*(?:\u00b0|\u00ba|deg(?:rees?)?|rad(?:ians?)?)\.?"
+_PAIR = re.compile(rf"(?:(add|remove|subtract|take away)\s+)?\(?\s*(.+?)\s*(?:[,;]|\s)\s*({_ANGLE_LAST})\s*\)?",
+                   re.IGNORECASE)
 
 OPPOSITE_SIDE = ("That direction is exactly opposite the right one. To add balancing mass, put it at the "
                  "angle found; half a turn away is where mass would be removed (write \"remove ... at ...\" "
@@ -127,7 +132,7 @@ class PolarType(AnswerType):
 
     def read(self, text: str, part: PartSpec) -> Given:
         refuse_long(text)
-        match = _POLAR.fullmatch(text.strip())
+        match = _POLAR.fullmatch(text.strip()) or _PAIR.fullmatch(text.strip())
         if not match:
             raise QuantityError(f"cannot read {text.strip()!r} as a magnitude at an angle, such as "
                                 f"\"{self.example(part).text(part.unit)}\"")
