@@ -1,6 +1,7 @@
 """One of a listed set of words ("increase" or "decrease"), compared by canonical name: case, hyphens,
 underscores and spacing do not matter, and the aliases in exgen/data/choice_aliases.txt are read
-("ccw" is counter-clockwise). A word that is none of the choices is a format problem, not a wrong answer.
+("ccw" is counter-clockwise). A sentence that names exactly one choice reads as it ("to the left",
+"Left."). A word that is none of the choices is a format problem, not a wrong answer.
 """
 from __future__ import annotations
 
@@ -69,9 +70,13 @@ class Choice(AnswerType):
     def read(self, text: str, part: PartSpec) -> Given:
         refuse_long(text, MAX_CHOICE_LENGTH)
         word = " ".join(text.split())
-        if not any(choice(word, c, choice_aliases()) for c in part.options.get("choices", ())):
+        choices = part.options.get("choices", ())
+        if any(choice(word, c, choice_aliases()) for c in choices):
+            return Given(text, word)
+        named = named_choice(word, choices)
+        if named is None:
             raise FormatProblem(f"'{_short(text)}' is not one of the choices")
-        return Given(text, word)
+        return Given(text, named)
 
     def example(self, part: PartSpec) -> str:
         return part.options.get("choices", ("",))[0]
@@ -108,6 +113,29 @@ class Choice(AnswerType):
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "does the power increase or decrease?", "trend", type=self.name,
                         options={"choices": ("increase", "decrease")})
+
+
+_NEGATIONS = frozenset({"not", "no", "neither", "nor", "never", "isn't", "isnt", "doesn't", "doesnt", "won't", "cannot"})
+_PUNCTUATION = str.maketrans({c: " " for c in "()[]{}'\"`.,;:!?"})
+
+
+def named_choice(text: str, choices) -> str | None:
+    """The one choice a sentence names ("to the left", "Left.", "the left spring is stretched", "it is a
+    mechanism"), by its words or an alias's as a whole run of words; None when it names none, more than
+    one ("left, right"), or says "not" outside the choice's own words ("not left")."""
+    words = canonical(text.translate(_PUNCTUATION)).replace("’", "'").split()
+    phrases = [(canonical(c).split(), c) for c in choices]
+    phrases += [(alias.split(), c) for alias, target in _canonical_aliases().items() for c in choices
+                if target == canonical(c)]
+    spans = [(start, start + len(phrase), c) for phrase, c in phrases if phrase
+             for start in range(len(words) - len(phrase) + 1) if words[start:start + len(phrase)] == phrase]
+    kept = [s for s in spans if not any(o[0] <= s[0] and s[1] <= o[1] and o[1] - o[0] > s[1] - s[0] for o in spans)]
+    if len({c for _, _, c in kept}) != 1:
+        return None
+    covered = {i for start, end, _ in kept for i in range(start, end)}
+    if any(w in _NEGATIONS for i, w in enumerate(words) if i not in covered):
+        return None
+    return kept[0][2]
 
 
 def _short(text: str, limit: int = 40) -> str:
