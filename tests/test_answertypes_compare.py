@@ -93,3 +93,18 @@ def test_widened_comparator_accepts_what_the_plain_one_does_not():
     spec = PartSpec("a", "x", "v", "m/s")
     assert not answer_type(spec).matches(5.1, 5.0, spec)
     assert answer_type(spec).matches(5.1, 5.0, spec, widen=3)
+
+
+@pytest.mark.parametrize("text, value", [("five", 5), ("Five belts.", 5), ("twelve teeth", 12), ("zero", 0)])
+def test_a_count_may_be_written_in_words(text, value):
+    spec = PartSpec("a", "the number of belts", "n", type="integer", tol=Tolerance(0.0))
+    assert answer_type(spec).read(text, spec).value == value
+
+
+@pytest.mark.parametrize("text", ["one two", "twentyone", "fivebelts"])
+def test_a_count_in_words_is_one_word_for_one_number(text):
+    from exgen.errors import FormatProblem
+
+    spec = PartSpec("a", "the number of belts", "n", type="integer", tol=Tolerance(0.0))
+    with pytest.raises(FormatProblem):
+        answer_type(spec).read(text, spec)

@@ -1,5 +1,5 @@
-"""A whole number, graded exactly: a count of belts, of teeth. "4", "4.0" and "4 belts" are 4 (a count
-may carry the noun for what it counts); "3.99" is not a whole number. A unit, when the part asks one,
+"""A whole number, graded exactly: a count of belts, of teeth. "4", "4.0", "4 belts" and "four" are 4 (a
+count may carry the noun for what it counts); "3.99" is not a whole number. A unit, when the part asks one,
 converts as for numbers, and a unit of another kind ("4 kg") is an answer of the wrong kind.
 """
 from __future__ import annotations
@@ -18,6 +18,12 @@ NOT_EXACT = "not the expected whole number"
 NOT_A_WHOLE_NUMBER = "a whole number is asked"
 #: "5 belts", "24 teeth", "3 V-belts": a count followed by up to three words for what is counted.
 _COUNT_WITH_NOUN = re.compile(r"\s*([+-]?\d{1,9}(?:\.\d{0,9})?)\s+([A-Za-z][A-Za-z-]{0,29}(?: [A-Za-z][A-Za-z-]{0,29}){0,2})\s*")
+
+
+#: "five", "Five belts.": a count in words, as far as a count in this course goes.
+_WORDS = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
+          "sixteen seventeen eighteen nineteen twenty").split()
+_COUNT_IN_WORDS = re.compile(rf"\s*({'|'.join(_WORDS)})(?:\s+[A-Za-z][A-Za-z-]{{0,29}}){{0,3}}\s*\.?\s*", re.IGNORECASE)
 
 
 def integer(given: float, expected: float) -> bool:
@@ -44,9 +50,13 @@ class Integer(AnswerType):
             reading, value = in_unit(text, part.unit)
         except FormatProblem:
             counted = _COUNT_WITH_NOUN.fullmatch(text)
-            if counted is None:
+            in_words = _COUNT_IN_WORDS.fullmatch(text)
+            if in_words is not None and sum(w.lower().strip(".") in _WORDS for w in text.split()) > 1:
+                in_words = None  # "one two": which?
+            if counted is None and in_words is None:
                 raise
-            number = float(counted.group(1))  # the words name what is counted: not a unit
+            # the words name what is counted: not a unit
+            number = float(counted.group(1)) if counted else float(_WORDS.index(in_words.group(1).lower()))
             return Given(text, number, number, None)
         return Given(text, value, reading.value, reading.unit)
 
