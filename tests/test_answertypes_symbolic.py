@@ -59,6 +59,9 @@ def matches(text: str, expected: Expression = RIGHT) -> bool:
     "1/(2π)√(2K/(3M+8m))", "sqrt(2K/(3M+8m))/2/pi", "((2K)/(3M + 8m))**0.5/(2*pi)", "sqrt(K/(1.5M+4m))/(2pi)",
     "0.1592*sqrt(2K/(3M+8m))", "sqrt(2)*sqrt(K)/(2*pi*sqrt(3*M+8*m))", "(1/(2π))·√(2K ÷ (3M + 8m))",
     "exp(0.5*ln(2K/(3M+8m)))/(2pi)", "1/(2pi sqrt((3M+8m)/(2K)))", "  sqrt( 2 K / ( 3 M + 8 m ) ) / ( 2 pi ) ",
+    # as copied from working: a name before, a frequency's unit after, square or curly brackets
+    "f = sqrt(2K/(3M+8m))/(2pi)", "f_n=sqrt(2K/(3M+8m))/(2pi)", "fₙ = √(2K/(3M + 8m))/(2π)",
+    "sqrt(2K/(3M+8m))/(2pi) Hz", "[sqrt(2K/(3M+8m))]/(2π)", "{2K/(3M+8m)}^(1/2)/(2π) hz.",
 ])
 def test_equivalent_forms_are_right(text):
     assert matches(text)
@@ -67,6 +70,7 @@ def test_equivalent_forms_are_right(text):
 @pytest.mark.parametrize("text", [
     "sqrt(2*K/(3*M+8*m))", "sqrt(K/(M+4m))/(2pi)", "sqrt(2K/(3M+7m))/(2pi)", "sqrt(2K/(3M+8m))/(2*3.1)",
     "2K/(3M+8m)/(2pi)", "sqrt(2K/(3M))/(2pi)", "K", "0.5", "sqrt(2K/(3M+8m))/(2pi) + 0.01",
+    "ω = sqrt(2K/(3M+8m))", "sqrt(2K/(3M+8m)) rad/s",
 ])
 def test_different_forms_are_wrong(text):
     assert not matches(text)

@@ -12,13 +12,20 @@ from __future__ import annotations
 
 import hashlib
 import math
+import re
 from functools import lru_cache
 from typing import Mapping
 
 from ..errors import InvalidDraw
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report
-from .expressions import CONSTANTS, FUNCTIONS, Expression, listed
+from .expressions import CONSTANTS, FUNCTIONS, MAX_LENGTH, Expression, listed
+
+#: "f =", "ωₙ = ", "f_n=": a name for the answer before it (one '=' in all).
+_LABEL = re.compile(r"^\s*[^\W\d][\w']{0,11}\s*=(?=[^=]*$)\s*")
+#: "... Hz", "... rad/s": a frequency's unit after the expression.
+_UNIT_AFTER = re.compile(r"\s+(?:Hz|rad\s*/\s*s(?:ec)?|1\s*/\s*s|s\s*\^\s*\(?-1\)?|s\u207b\u00b9|cps)\.?\s*$",
+                         re.IGNORECASE)
 
 REL_TOL = 1e-3
 POINTS = 8                  # sets of symbol values every comparison uses
@@ -112,7 +119,10 @@ class Symbolic(AnswerType):
     # ---- grading -----------------------------------------------------------------------------
 
     def read(self, text: str, part: PartSpec) -> Given:
-        return Given(text, Expression.parse(text, part.options["symbols"]))
+        """The expression, without a name for it before ("f = ...") or a frequency's unit after ("... Hz"):
+        students copy both from their working."""
+        bare = _UNIT_AFTER.sub("", _LABEL.sub("", text, count=1), count=1) if len(text) <= MAX_LENGTH else text
+        return Given(text, Expression.parse(bare, part.options["symbols"]))
 
     def example(self, part: PartSpec) -> Expression:
         """A form unlike any physics answer, in the part's own symbols: 2*a^2/(3*b)."""
