@@ -65,7 +65,9 @@ _PRIME_AFTER_DIGIT = re.compile("(?<=[0-9\u2080-\u2089])'")
 #: ("N · m") where the key's math sets it tight, so the prose sets the math face's dot operator instead,
 #: in a box that never breaks. (A fixed negative space round the body's dot closed up the regular face
 #: but ran the bold face's narrower dot into the N of the keys' Answers table.)
-_DOTTED_UNIT = re.compile("\\S+\u00b7\\S+")  # not a spaced separator, " · "
+#: A unit with a slash between letters ("kN/m", "kg/m³") is boxed too: a line may break after a slash, which
+#: left "4.5 kN/" at a line's end and "m" on the next.
+_DOTTED_UNIT = re.compile("\\S+\u00b7\\S+|\\S*[A-Za-z\u00b2\u00b3]/[A-Za-z]\\S*")  # not a spaced " · "
 UNIT_DOT = '#text(font: "New Computer Modern Math")[\u22c5]'
 
 
