@@ -1,0 +1,35 @@
+"""Machines that could exist, chapters 3-7: each rule checked over many seeds from the drawn numbers
+themselves, independently of the templates' own `require:` and `report:` expressions."""
+import math
+
+from exgen.variant import make_variant
+
+SEEDS = range(150)
+G = 9.81
+
+
+def variants(bank, template_id):
+    template = bank.get(template_id)
+    return [make_variant(template, seed) for seed in SEEDS]
+
+
+# ---- free vibration -----------------------------------------------------------------------------
+
+def test_a_disc_on_a_torsion_shaft_is_a_disc_on_a_shaft(bank):
+    """A solid disc of steel or cast iron is 4-40 % as thick as it is across (not 500 kg on 0.3 m, a
+    cylinder as long as a man's leg; not 20 kg on 1.5 m, a plate 1.5 mm thick), and its shaft is 1/25 to
+    1/4 of its diameter."""
+    for v in variants(bank, "vibration.torsional_shaft_disc"):
+        m, disc, shaft = v.si["m"], v.si["D"], v.si["d"]
+        for density in (7200, 7850):
+            thickness = 4 * m / (density * math.pi * disc ** 2)
+            assert 0.035 * disc <= thickness <= 0.45 * disc, (v.seed, m, disc)
+        assert disc / 25 - 1e-9 <= shaft <= disc / 4 + 1e-9, (v.seed, shaft, disc)
+
+
+def test_an_overhung_disc_does_not_bend_its_shaft_beyond_a_working_stress(bank):
+    """The disc's weight at the end of a cantilever shaft bends it at the root by m g l / (π d³/32): a few
+    tens of MPa at most in a shaft that vibrates (a 30 mm shaft 600 mm long under 200 kg was drawn: 444 MPa)."""
+    for v in variants(bank, "vibration.cantilever_end_mass"):
+        stress = 32 * v.si["m"] * G * v.si["l"] / (math.pi * v.si["d"] ** 3)
+        assert stress <= 60e6 * (1 + 1e-9), (v.seed, stress / 1e6)
