@@ -208,7 +208,7 @@ def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
         symbols = tuple(values[s.name].symbol for s in parsed.slots)
         if step.symbolic and not _restates(parsed, symbols, step.symbol):
             formula = Filled(parsed, symbols)
-        if parsed.slots and not (len(parsed.slots) == 1 and parsed.latex.strip() == "@" + parsed.slots[0].name):
+        if parsed.slots and not _restates_value(parsed, values):
             substituted = _substituted(parsed, plan, values, step, first_unit)
     shown = [Quantity(in_unit(step.value, step.unit, first_unit), first_unit)]
     extra = [me.shown, me.si] if step.name in in_si or first_unit != me.shown else []
@@ -223,6 +223,15 @@ def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
         formula = formula if _latex_of(formula) != MARKDOWN.number(step.value) else None
     return WorkLine(step.name, step.symbol, formula, substituted, tuple(shown), step.note,
                     tuple(answered.get(step.name, ())))
+
+
+def _restates_value(formula: Formula, values) -> bool:
+    """'x = @y' or 'φ₃ = −@θ₃' with θ₃ ≥ 0: the numbers would only write the value again ('= −14.56° = −14.56°');
+    '−@b' with b < 0 keeps them ('= −(−3050) = 3050')."""
+    if len(formula.slots) != 1 or formula.latex.replace(" ", "").lstrip("+-") != "@" + formula.slots[0].name:
+        return False
+    value = values[formula.slots[0].name].value
+    return not formula.latex.strip().startswith("-") or (isinstance(value, (int, float)) and value >= 0)
 
 
 def _restates(formula: Formula, symbols, symbol: str) -> bool:

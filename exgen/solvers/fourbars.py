@@ -157,8 +157,8 @@ GRASHOF_REASON = {
     "crank-rocker": "the shortest link is beside the ground link, so it turns fully and the other rocks",
     "double-crank": "the shortest link is the ground link, so both links pivoted on it turn fully",
     "double-rocker": "the shortest link is the coupler, opposite the ground: it turns fully, both side links rock",
-    "change-point": "S + L = P + Q: the links can all line up, and the linkage may change circuit there",
-    "triple-rocker": "S + L > P + Q: no link can make a full turn",
+    "change-point": "the links can all line up, and the linkage may change circuit there",
+    "triple-rocker": "no link can make a full turn, whichever is grounded",
 }
 NAMES = ("AB", "BC", "CD", "DA")
 

@@ -1,0 +1,37 @@
+"""A key's working says each thing once: no line restates its own value, no note repeats its comparison."""
+import pytest
+
+from exgen.render.solution import solution
+from exgen.variant import make_variant
+
+SEEDS = range(12)
+
+
+def _all_ids(bank):
+    return [t.id for t in bank]
+
+
+def test_no_worked_line_substitutes_a_lone_signed_value(bank):
+    """'φ₃ = −θ₃ = −14.56° = −14.56°': a formula that is one value with a sign is written once with its
+    number ('φ₃ = −θ₃ = −14.56°'), as a formula that is one value alone already was; only a negative value
+    keeps the step that shows its sign turned ('ΔF = −b = −(−3050) = 3050 N')."""
+    found = []
+    for template in bank:
+        for seed in SEEDS:
+            for line in solution(make_variant(template, seed)).lines:
+                if line.substituted is None:
+                    continue
+                formula = line.substituted.formula
+                if len(formula.slots) == 1 and formula.latex.replace(" ", "").lstrip("+-") == "@" + formula.slots[0].name:
+                    number = line.substituted.fills[0]
+                    if not (formula.latex.strip().startswith("-") and number.value < 0):
+                        found.append((template.id, seed, line.name))
+    assert not found, found[:5]
+
+
+@pytest.mark.parametrize("seed", range(60))
+def test_the_grashof_class_states_its_comparison_once(bank, seed):
+    """'S + L > P + Q with BC grounded: S + L > P + Q: no link can make a full turn' said it twice."""
+    variant = make_variant(bank.get("linkages.grashof"), seed)
+    note = variant.step("kind").note
+    assert note.count("P + Q") == 1, note
