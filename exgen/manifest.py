@@ -146,23 +146,28 @@ def secret_mismatch(manifest: Manifest, secret: bytes, source: str) -> str | Non
 
 
 def template_mismatches(manifest: Manifest, bank: Bank) -> list[str]:
-    """One line per template that would not give the issued numbers or verdicts now, naming what changed."""
-    problems = []
+    """One line per set of templates that would not give the issued numbers or verdicts now, naming what
+    changed; templates with the same changes (every one a changed solver runs) share a line."""
+    changes: dict[str, list[str]] = {}
     for template_id, recorded in manifest.templates.items():
         try:
             template = bank.get(template_id)
         except ExgenError:
-            problems.append(f"{template_id}: no longer in the template bank")
+            changes.setdefault("no longer in the template bank", []).append(template_id)
             continue
         if "file_sha256" in recorded:  # an older manifest: the template file's bytes, nothing else
             if template.path is None or hashlib.sha256(template.path.read_bytes()).hexdigest() != recorded["file_sha256"]:
-                problems.append(f"{template_id}: its template file {template.path} changed")
+                changes.setdefault(f"its template file {template.path} changed", []).append(template_id)
             continue
         current = template_version(template)
         if current.digest == recorded.get("version"):
             continue
-        problems.append(f"{template_id}: " + "; ".join(_what_changed(manifest, template, recorded, current)))
-    return problems
+        changes.setdefault("; ".join(_what_changed(manifest, template, recorded, current)), []).append(template_id)
+    return [f"{_listed(ids)}: {what}" for what, ids in changes.items()]
+
+
+def _listed(ids: list[str]) -> str:
+    return ids[0] if len(ids) == 1 else ", ".join(ids[:-1]) + " and " + ids[-1]
 
 
 def _what_changed(manifest: Manifest, template, recorded: dict, current) -> list[str]:
