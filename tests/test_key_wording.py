@@ -35,3 +35,14 @@ def test_the_grashof_class_states_its_comparison_once(bank, seed):
     variant = make_variant(bank.get("linkages.grashof"), seed)
     note = variant.step("kind").note
     assert note.count("P + Q") == 1, note
+
+
+def test_g_is_written_as_its_symbol_in_every_formula(bank):
+    """'m (9.81) L n / η²' wrote g's value into a formula; a formula names g, and g = 9.81 m/s² is a line."""
+    found = []
+    for template in bank:
+        for seed in range(3):
+            for step in make_variant(template, seed).steps:
+                if "9.81" in (step.formula or ""):
+                    found.append((template.id, step.name, step.formula))
+    assert not found, found

@@ -209,7 +209,7 @@ def robot_arm(p, d):
     d.step("k_alpha", i_eq / n, "kg*m^2", symbol=r"\frac{I_{EQ}}{n}", formula=r"\frac{@I_EQ}{@n}",
            note=r"Problem 1.1's equation: $\tau_m = (I_{EQ}/n)\,\alpha_A + (n/\eta^2)\,m g L \cos\theta$")
     d.step("k_weight", weight * n / p.eta ** 2, "N*m", symbol=r"\frac{n\,m g L}{\eta^2}",
-           formula=r"\frac{@m\,(9.81)\,@L\,@n}{@eta^2}", note=r"the coefficient of $\cos\theta$")
+           formula=r"\frac{@n\,@m\,@g\,@L}{@eta^2}", note=r"the coefficient of $\cos\theta$")
     alpha_m = d.step("alpha_m", p.alpha_A / n, "rad/s^2", symbol=r"\alpha_m", formula=r"\frac{@alpha_A}{@n}")
     d.step("tau_m", i_eq * alpha_m + hold, "N*m", symbol=r"\tau_m", formula=r"@I_EQ\,@alpha_m + @tau_g")
     d.mistake("tau_m", "ratio_inverted", i_eq * p.alpha_A * n + hold)
