@@ -46,3 +46,16 @@ def test_g_is_written_as_its_symbol_in_every_formula(bank):
                 if "9.81" in (step.formula or ""):
                     found.append((template.id, step.name, step.formula))
     assert not found, found
+
+
+@pytest.mark.parametrize("template_id", ["balancing.inline_engine_unbalance", "balancing.inline_engine_firing"])
+def test_a_resultant_that_vanishes_is_given_no_direction(bank, template_id):
+    """'F_p = 0 N' followed by 'θ_Fp = 180°: opposite the resultant': a zero force has no direction to balance."""
+    for seed in range(40):
+        variant = make_variant(bank.get(template_id), seed)
+        names = {step.name for step in variant.steps}
+        for tag in ("Fp", "Cp", "Fs", "Cs"):
+            if variant.step(tag).value == 0:
+                assert f"theta_{tag}" not in names, (seed, tag)
+            elif template_id == "balancing.inline_engine_unbalance":
+                assert f"theta_{tag}" in names, (seed, tag)

@@ -77,7 +77,7 @@ def _crank_polygons(d, p, names, positions, with_angles: bool = False, fires=Non
                                   "N" if kind == "force" else "N*m", symbol=SYMBOLS_INLINE[tag],
                                   formula=rf"@{size}\sqrt{{@{x_name}^2 + @{y_name}^2}}",
                                   note=f"the largest unbalanced {what} {kind}")
-            if with_angles:
+            if with_angles and results[tag] > 0:   # a resultant that vanishes has no direction to balance
                 closing_angle(d, f"theta_{tag}", rf"\theta_{{{tag[0]}_{{\mathrm{{{tag[1]}}}}}}}", x_name, y_name)
     return results
 
@@ -110,7 +110,8 @@ def inline_engine_unbalance(p, d):
     unit, n = d.value_of("F1"), p.l / p.r
     d.require(results["Cp"] >= 0.15 * 4 * unit * p.a, "the engine nearly balances its primary couple: no direction")
     for tag in ("Fp", "Cp", "Fs", "Cs"):
-        d.mistake(f"theta_{tag}", "resultant_not_balance", d.value_of(f"theta_{tag}") + PI)
+        if f"theta_{tag}" in d:
+            d.mistake(f"theta_{tag}", "resultant_not_balance", d.value_of(f"theta_{tag}") + PI)
     _inline_slips(d, p, angles, positions, results, angle_steps=True)
     record(d, "Fp", "scalar_sum", 4 * unit)
     record(d, "Fs", "scalar_sum", 4 * unit / n)
@@ -121,7 +122,8 @@ def inline_engine_unbalance(p, d):
                                ("sign_lost", [abs(x) for x in positions])):
             _, (size, angle) = me.inline_unbalance(p.m, p.r, n, p.N, angles, where, harmonic)
             d.mistake(tag, mistake, size, if_apart=True)
-            d.mistake(f"theta_{tag}", mistake, angle + PI, if_apart=True)
+            if f"theta_{tag}" in d:
+                d.mistake(f"theta_{tag}", mistake, angle + PI, if_apart=True)
 
 
 def inline_engine_firing(p, d):
