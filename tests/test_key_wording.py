@@ -59,3 +59,20 @@ def test_a_resultant_that_vanishes_is_given_no_direction(bank, template_id):
                 assert f"theta_{tag}" not in names, (seed, tag)
             elif template_id == "balancing.inline_engine_unbalance":
                 assert f"theta_{tag}" in names, (seed, tag)
+
+
+def test_a_direction_on_an_axis_names_no_quadrant(bank):
+    """'θ = 0°: opposite the resultant, in the quadrant +x, −y': an angle of 0° or 180° is in no quadrant."""
+    import math
+
+    found = []
+    for template in bank:
+        if not template.id.startswith("balancing."):
+            continue
+        for seed in range(40):
+            for step in make_variant(template, seed).steps:
+                if "in the quadrant" in step.note and isinstance(step.value, float):
+                    quarter = math.degrees(step.value) / 90
+                    if abs(quarter - round(quarter)) < 1e-9:
+                        found.append((template.id, seed, step.name, step.note))
+    assert not found, found[:3]

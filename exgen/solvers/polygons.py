@@ -62,6 +62,8 @@ def closing_angle(d, name: str, symbol: str, x_name: str, y_name: str, opposite:
     if x == 0:
         return d.step(name, angle, "rad", symbol=symbol, note=f"{note}: its components lie on the 90° line")
     formula = direction_formula(f"@{y_name}", f"@{x_name}", y, x, angle)
+    if y == 0:   # on the 0° line: no quadrant to name ("in the quadrant +x, −y" for 0°)
+        return d.step(name, angle, "rad", symbol=symbol, formula=formula, note=f"{note}: it lies on the 0° line")
     quadrant = f"{'−' if (x < 0) != opposite else '+'}x, {'−' if (y < 0) != opposite else '+'}y"
     return d.step(name, angle, "rad", symbol=symbol, formula=formula, note=f"{note}, in the quadrant {quadrant}")
 
