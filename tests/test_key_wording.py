@@ -76,3 +76,18 @@ def test_a_direction_on_an_axis_names_no_quadrant(bank):
                     if abs(quarter - round(quarter)) < 1e-9:
                         found.append((template.id, seed, step.name, step.note))
     assert not found, found[:3]
+
+
+def test_the_formula_question_s_figure_says_what_it_shows(bank):
+    """The caption read 'The system: two springs', a catalogue entry; it names the rod or pulley drawn."""
+    from exgen.figures.formula_systems import formula_system
+
+    captions = {}
+    for seed in range(40):
+        variant = make_variant(bank.get("vibration.natural_frequency_formula"), seed)
+        svg = formula_system(variant)
+        captions[variant.param("system").text] = svg
+    assert len(captions) == 5
+    for system, svg in captions.items():
+        assert "The system:" not in svg, system
+        assert ("rod" if system in ("lever", "two springs") else "pulley") in svg, system

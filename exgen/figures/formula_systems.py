@@ -87,4 +87,14 @@ def formula_system(variant) -> str:
         _fixed(d, system == "stepped pulley")
     else:
         _lever(d, system == "two springs")
-    return d.svg(f"The system: {system}")
+    return d.svg(CAPTIONS[system])
+
+
+#: What each figure shows, as a caption reads ("The system: two springs" named the catalogue entry).
+CAPTIONS = {
+    "floating pulley": "A pulley hanging in a loop of cord on a spring, with the mass m on the cord",
+    "fixed pulley": "A pulley on a fixed axle, the mass m on one end of its cord and the spring on the other",
+    "stepped pulley": "A stepped pulley: the mass m on the rim, the spring on the hub",
+    "lever": "A rod pivoted at one end on a spring, with the mass m at its middle",
+    "two springs": "A rod pivoted at its middle on two springs, with the mass m at one end",
+}
