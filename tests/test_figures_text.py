@@ -139,3 +139,18 @@ def test_primes_in_figures_come_from_the_math_face():
     d = Drawing()
     d.text((0, 0), "B\u2032")
     assert 'font-family="New Computer Modern Math">\u2032</tspan>' in d.svg()
+
+
+def test_a_units_dot_in_a_figure_is_set_tight_as_in_the_text(every_figure):
+    """'C = 10810 N · s/m' in a figure beside 'N·s/m' in its statement: the text face's middle dot stands
+    spaced, so every figure sets the math face's dot operator, as the sheet's prose and the keys do."""
+    spaced = [(tid, seed, name) for tid, seed, name, svg in every_figure
+              for text in re.findall(r"<text[^>]*>(.*?)</text>", svg) if "\u00b7" in text]
+    assert not spaced, spaced[:5]
+    from exgen.figures.svg import Drawing
+
+    d = Drawing()
+    box = d.text((0, 0), "I = 3.3 kg·m²")
+    assert 'font-family="New Computer Modern Math">\u22c5</tspan>' in d.svg()
+    assert box.x1 - box.x0 == pytest.approx(text_box((0, 0), "I = 3.3 kgm²").x1 - text_box((0, 0), "I = 3.3 kgm²").x0
+                                            + 14 * measure("\u22c5").width)

@@ -30,6 +30,7 @@ def _content(element: ET.Element) -> str:
         text = span.text or ""
         if span.get("font-size") is not None:
             text = text.translate(_TO_SUB if dy > 0 else _TO_SUP)
+        text = text.replace("\u22c5", "\u00b7")   # a unit's dot, set from the math face
         out.append(text + (span.tail or ""))
     return "".join(out)
 

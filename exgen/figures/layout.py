@@ -14,7 +14,9 @@ from .metrics import FROM_MATH, measure
 
 SUBSCRIPTS = "₀₁₂₃₄₅₆₇₈₉"
 SUPERSCRIPTS = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻"
-_PLAIN = str.maketrans(SUBSCRIPTS + SUPERSCRIPTS, "0123456789" * 2 + "−")
+#: Scripts become plain digits; a middle dot (a unit's, kg·m²) becomes the math face's dot operator: the
+#: text face's stands spaced ("kg · m²") beside the sheet's tight "kg·m²".
+_PLAIN = str.maketrans(SUBSCRIPTS + SUPERSCRIPTS + "·", "0123456789" * 2 + "−" + "⋅")
 SCRIPT = 0.72        # size of a sub- or superscript, as a fraction of the text's
 SUB_SHIFT = 0.2      # baseline shift of a subscript (down) and superscript (up), in ems of the text
 SUP_SHIFT = -0.36
@@ -44,7 +46,8 @@ def runs(content: str) -> list[Run]:
     out: list[Run] = []
     for char in content:
         shift = 1 if char in SUBSCRIPTS else -1 if char in SUPERSCRIPTS else 0
-        plain, math = char.translate(_PLAIN), char in FROM_MATH
+        plain = char.translate(_PLAIN)
+        math = plain in FROM_MATH
         if out and out[-1].shift == shift and out[-1].math == math:
             out[-1] = Run(out[-1].text + plain, shift, math)
         else:

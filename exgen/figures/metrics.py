@@ -14,15 +14,16 @@ from functools import lru_cache
 from importlib import resources
 
 FAMILY = "New Computer Modern"
-#: Signs the text face lacks, set from its math companion (same design, embedded by Typst too).
+#: Signs the text face lacks, set from its math companion (same design, embedded by Typst too); the dot
+#: of a unit (kg·m², N·s/m) is the math face's dot operator, set tight as in the sheet's prose and the keys.
 MATH_FAMILY = "New Computer Modern Math"
-FROM_MATH = "′″"
+FROM_MATH = "′″⋅"
 #: What an SVG asks for: the family Typst embeds, then look-alikes a browser may have, then any serif.
 SVG_FAMILY = "'New Computer Modern', 'Latin Modern Roman', 'CMU Serif', serif"
 STYLES = ("regular", "bold", "italic", "bold-italic")
 #: The characters measured: printable ASCII, Greek, and the signs figures print.
 CHARACTERS = ("".join(chr(c) for c in range(0x20, 0x7F)) + "ΑΒΓΔΕΖΗΘΙΚΛΜΝΞΟΠΡΣΤΥΦΧΨΩ"
-              "αβγδεζηθικλμνξοπρστυφχψω°·×−–—±√→←′″")
+              "αβγδεζηθικλμνξοπρστυφχψω°·×−–—±√→←′″⋅")
 #: Width and ink of a character the table lacks: as wide and tall as the widest capitals.
 UNKNOWN = (0.9, 0.75, 0.25)
 TABLE = "font_metrics.json"
