@@ -91,3 +91,16 @@ def test_the_formula_question_s_figure_says_what_it_shows(bank):
     for system, svg in captions.items():
         assert "The system:" not in svg, system
         assert ("rod" if system in ("lever", "two springs") else "pulley") in svg, system
+
+
+def test_a_period_taken_as_one_over_omega_is_named_as_that(bank):
+    """A periodic time worked as 1/ω was told 'That is the circular frequency ω in rad/s': the answer is in
+    seconds, and the slip is the 2π of a cycle left out of T = 2π/ω."""
+    from exgen.mistake_messages import default_messages
+
+    for template in bank:
+        for part in template.parts:
+            for spec in part.mistakes:
+                if spec.when == "omega_for_f" and part.unit == "s":
+                    message = spec.say or default_messages()[spec.when]
+                    assert "1/ω" in message and "circular frequency" not in message, (template.id, part.id, message)
