@@ -104,3 +104,17 @@ def test_a_period_taken_as_one_over_omega_is_named_as_that(bank):
                 if spec.when == "omega_for_f" and part.unit == "s":
                     message = spec.say or default_messages()[spec.when]
                     assert "1/ω" in message and "circular frequency" not in message, (template.id, part.id, message)
+
+
+def test_feedback_on_a_percentage_change_speaks_of_the_change(bank):
+    """The idler's change in power per belt, worked upside down, was told about pulleys' speeds
+    ('For pulleys N₂/N₁ = d₁/d₂'): a percentage part names the ratio it is about."""
+    from exgen.mistake_messages import default_messages
+
+    for template in bank:
+        for part in template.parts:
+            if part.unit != "percent":
+                continue
+            for spec in part.mistakes:
+                message = spec.say or default_messages()[spec.when]
+                assert "pulleys N₂/N₁" not in message, (template.id, part.id, spec.when)
