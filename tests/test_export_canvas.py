@@ -113,3 +113,18 @@ def _n(value):
     from exgen.export.filters import number
 
     return number(value)
+
+
+def test_math_is_latex_canvas_finds_and_display_lines_come_with_inline_math():
+    """Canvas loads MathJax for text holding \\( or $$, not \\[ alone: every text with display math
+    also has inline math, and every delimiter is closed."""
+    files, found = package()
+    document = etree.fromstring(files[f"{IDENT}/{IDENT}.xml"])
+    texts = [m.text or "" for m in document.iter(f"{Q}mattext")]
+    with_math = [t for t in texts if "\\(" in t or "\\[" in t]
+    assert len(with_math) > 100
+    assert all("\\(" in t for t in with_math if "\\[" in t)
+    assert all(t.count("\\(") == t.count("\\)") and t.count("\\[") == t.count("\\]") for t in texts)
+    for group in found:
+        for question in group.questions:
+            assert "\\(" in str(question.solution)  # the Given table's symbols at least

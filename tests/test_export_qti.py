@@ -1,6 +1,7 @@
 """The IMS QTI 2.1 package for every template: every item and the test valid against imsqti_v2p1.xsd
-(vendored, read with no network), the manifest checked for the structure of IMS CP 1.1 and for files
-that exist, and every value and tolerance as the pool has them."""
+(vendored, read with no network, MathML 2 included), the manifest checked for the structure of IMS CP
+1.1 and for files that exist, every value and tolerance as the pool has them, and every formula of the
+statement, asks and worked solution set as MathML."""
 import io
 import zipfile
 from functools import lru_cache
@@ -8,7 +9,8 @@ from pathlib import PurePosixPath
 
 from lxml import etree
 
-from exgen.export.html import UNICODE_HTML
+from exgen.export.html import MATHML_XHTML
+from exgen.render.unicode_math import latex_to_unicode, split_math
 from exgen.export.pool import make_item
 from exgen.export.qti import IMAGES, gap_refs, qti_files
 
@@ -16,13 +18,14 @@ from export_helpers import every_template_pool, qti_schema
 
 QTI = "{http://www.imsglobal.org/xsd/imsqti_v2p1}"
 CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
+MATHML = "{http://www.w3.org/1998/Math/MathML}"
 
 
 @lru_cache(maxsize=1)
 def package():
     pool = every_template_pool()
     files = qti_files(pool)
-    items = [make_item(q, i, v, UNICODE_HTML, IMAGES) for q in pool.questions for i, v in enumerate(q.variants, 1)]
+    items = [make_item(q, i, v, MATHML_XHTML, IMAGES) for q in pool.questions for i, v in enumerate(q.variants, 1)]
     return files, {item.ident: item for item in items if item.gaps}
 
 
@@ -106,6 +109,54 @@ def test_values_tolerances_points_and_feedback_round_trip():
                 assert "".join(feedback[wrong.fid].itertext()) == wrong.wrong.message.unescape()
         for img in document.iter(f"{QTI}img"):
             assert str(PurePosixPath("items") / img.get("src")) in files
+
+
+def _math_spans(text: str) -> list[str]:
+    return [chunk for is_math, chunk in split_math(text) if is_math]
+
+
+def _text_outside_math(element) -> str:
+    """The element's text with every <math> left out (its tail kept)."""
+    out = [element.text or ""] if element.tag != f"{MATHML}math" else []
+    for child in element:
+        out.append(_text_outside_math(child))
+        out.append(child.tail or "")
+    return "".join(out)
+
+
+def test_formulas_are_mathml_in_the_namespace_the_schema_checks():
+    files, items = package()
+    checked = 0
+    for ident, item in items.items():
+        document = etree.fromstring(files[f"items/{ident}.xml"])
+        body = document.find(f"{QTI}itemBody")
+        statement = body.find(f"{QTI}div")
+        spans = _math_spans(item.variant.statement)
+        formulas = statement.findall(f".//{MATHML}math")
+        # each $...$ of the statement is one <math>, whose alternative text is that formula
+        assert [m.get("alttext") for m in formulas] == [latex_to_unicode(s) for s in spans], ident
+        asks = [p for p in body.findall(f"{QTI}p") if (p.text or "").startswith("(")]
+        for part, ask in zip(item.exported_parts, asks):
+            assert len(ask.findall(f".//{MATHML}math")) == len(_math_spans(item.variant.asks[part.id])), ident
+        solution = document.find(f"{QTI}modalFeedback[@identifier='SOLUTION']")
+        display = [m for m in solution.iter(f"{MATHML}math") if m.get("display") == "block"]
+        assert display, f"{ident}: the worked solution has no display formula"
+        for element in (body, solution):
+            text = _text_outside_math(element)
+            assert "\\" not in text and "$" not in text, f"{ident}: LaTeX outside MathML: {text[:200]}"
+        assert not document.findall(f".//{QTI}math") and not document.findall(".//math")
+        checked += len(formulas) + len(display)
+    assert checked > 1000
+
+
+def test_math_that_is_not_mathml_2_is_rejected():
+    files, _ = package()
+    name = next(n for n in files if n.startswith("items/") and b'display="block"' in files[n])
+    assert qti_schema().validate(etree.fromstring(files[name]))
+    for broken in (files[name].replace(b'display="block"', b'display="wide"', 1),
+                   files[name].replace(b"<mrow>", b"<mrow><mfoo/>", 1),
+                   files[name].replace(b'xmlns="http://www.w3.org/1998/Math/MathML"', b"", 1)):
+        assert not qti_schema().validate(etree.fromstring(broken))
 
 
 def test_the_package_is_a_zip_with_the_manifest_at_its_root(tmp_path):

@@ -2,10 +2,10 @@
 asks and worked solutions with, and the one layout of a worked solution.
 
 Moodle and Canvas typeset LaTeX between \\( \\) and \\[ \\] with MathJax (Moodle's MathJax filter is on
-by default; Canvas renders it in quiz text), so their HTML keeps the math as LaTeX. A QTI 2.1 item is
-XHTML that any delivery engine must show: its math is written in Unicode (θ = π − 2α, T₁/T₂), which
-needs no MathJax and no MathML support. Every method returns `markupsafe.Markup`: prose is escaped
-here once and the layouts run with autoescaping on.
+by default; docs/lms.md says why Canvas gets LaTeX too), so their HTML keeps the math as LaTeX. A QTI
+2.1 item is XHTML whose schema admits MathML 2: its math is MathML made from the same LaTeX, which
+browsers lay out themselves. Every method returns `markupsafe.Markup`: prose is escaped here once and
+the layouts run with autoescaping on.
 """
 from __future__ import annotations
 
@@ -15,8 +15,9 @@ from pathlib import Path
 import jinja2
 from markupsafe import Markup, escape
 
-from ..render.targets import Markdown, Plain
-from ..render.unicode_math import latex_to_unicode, split_math, unescape_dollars
+from ..render.targets import Markdown
+from ..render.unicode_math import split_math, unescape_dollars
+from .mathml2 import qti_math
 
 LAYOUTS = Path(__file__).parent / "templates"
 
@@ -45,26 +46,28 @@ class LatexHtml(Markdown):
         return Markup("\\[") + escape(" ".join(piece for row in rows for piece in row)) + Markup("\\]")
 
 
-class UnicodeHtml(Plain):
-    """XHTML whose math is plain Unicode text: shown as it is by any engine."""
+class MathmlXhtml(Markdown):
+    """XHTML whose math is MathML (QTI 2.1 allows MathML 2 in item bodies and feedback): composed as
+    LaTeX, as for the keys, and converted where it meets prose (exgen.export.mathml2)."""
 
-    name = "unicode-html"
+    name = "mathml-xhtml"
 
     def inline(self, math_source: str) -> Markup:
-        return escape(math_source)
+        return Markup(qti_math(math_source))
 
     def text(self, text: str) -> Markup:
-        return Markup("".join(str(escape(latex_to_unicode(chunk))) if is_math else _paragraphs(unescape_dollars(chunk))
+        return Markup("".join(qti_math(chunk) if is_math else _paragraphs(unescape_dollars(chunk))
                               for is_math, chunk in split_math(text)))
 
     def prose(self, text: str) -> Markup:
         return escape(text)
 
     def equation(self, rows: list[list[str]]) -> Markup:
-        return escape(" ".join(piece for row in rows for piece in row))
+        """A worked line as display math, one block per planned row (as on the practice pages)."""
+        return Markup("".join(qti_math(" ".join(row), display=True) for row in rows))
 
 
-LATEX_HTML, UNICODE_HTML = LatexHtml(), UnicodeHtml()
+LATEX_HTML, MATHML_XHTML = LatexHtml(), MathmlXhtml()
 
 
 @lru_cache(maxsize=1)

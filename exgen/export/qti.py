@@ -1,12 +1,12 @@
 """IMS QTI 2.1 content package: a zip of one assessmentItem per variant, an assessmentTest that picks
-one variant of each question per candidate, and imsmanifest.xml. Math is Unicode text (exgen.export.html);
+one variant of each question per candidate, and imsmanifest.xml. Math is MathML (exgen.export.html);
 the layouts qti_item.xml.j2, qti_test.xml.j2 and qti_manifest.xml.j2 hold every format detail."""
 from __future__ import annotations
 
 from dataclasses import dataclass
 from pathlib import Path
 
-from .html import UNICODE_HTML, render
+from .html import MATHML_XHTML, render
 from .pool import Item, Pool, make_item
 from .zips import write_zip
 
@@ -53,7 +53,7 @@ def qti_files(pool: Pool) -> dict[str, bytes]:
     files: dict[str, bytes] = {}
     sections, listed = [], []
     for question in pool.questions:
-        items = [make_item(question, i, v, UNICODE_HTML, IMAGES) for i, v in enumerate(question.variants, 1)]
+        items = [make_item(question, i, v, MATHML_XHTML, IMAGES) for i, v in enumerate(question.variants, 1)]
         items = [item for item in items if item.gaps]
         if not items:
             continue
