@@ -6,8 +6,6 @@ element the browser knows, and a fraction must stand over its denominator.
 Skipped, saying why, only where no Chromium is installed (.ci/run installs it). With EXGEN_SCREENSHOTS
 set to a folder, the screenshot docs/lms.md shows is written there.
 """
-import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -15,13 +13,11 @@ from lxml import etree
 
 from exgen.export.qti import qti_files
 
+from chromium import CHROMIUM, SHOTS, needs_chromium
 from export_helpers import SECRET
 
-CHROMIUM = os.environ.get("CHROMIUM_PATH") or shutil.which("chromium") or "/usr/bin/chromium"
 playwright_api = pytest.importorskip("playwright.sync_api", reason="Playwright is not installed")
-pytestmark = pytest.mark.skipif(not Path(CHROMIUM).exists(),
-                                reason=f"no Chromium at {CHROMIUM} (apt-get install chromium, or set CHROMIUM_PATH)")
-SHOTS = os.environ.get("EXGEN_SCREENSHOTS")
+pytestmark = needs_chromium
 
 QTI = "http://www.imsglobal.org/xsd/imsqti_v2p1"
 XHTML = "http://www.w3.org/1999/xhtml"

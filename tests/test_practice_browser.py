@@ -5,8 +5,6 @@ browser lays out; nothing is fetched from anywhere but the app.
 Skipped, saying why, only where no Chromium is installed (.ci/run installs it). With EXGEN_SCREENSHOTS
 set to a folder, the screenshots docs/practice.md shows are written there.
 """
-import os
-import shutil
 from pathlib import Path
 
 import pytest
@@ -15,13 +13,11 @@ from exgen.answertypes import answer_type
 from exgen.bank import load_bank
 from practice.session import Practice
 from practice.store import Store
+from chromium import CHROMIUM, SHOTS, needs_chromium
 from practice_server import running_server
 
-CHROMIUM = os.environ.get("CHROMIUM_PATH") or shutil.which("chromium") or "/usr/bin/chromium"
 playwright_api = pytest.importorskip("playwright.sync_api", reason="Playwright is not installed")
-pytestmark = pytest.mark.skipif(not Path(CHROMIUM).exists(),
-                                reason=f"no Chromium at {CHROMIUM} (apt-get install chromium, or set CHROMIUM_PATH)")
-SHOTS = os.environ.get("EXGEN_SCREENSHOTS")
+pytestmark = needs_chromium
 
 
 @pytest.fixture(scope="module")
