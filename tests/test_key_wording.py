@@ -118,3 +118,10 @@ def test_feedback_on_a_percentage_change_speaks_of_the_change(bank):
             for spec in part.mistakes:
                 message = spec.say or default_messages()[spec.when]
                 assert "pulleys N₂/N₁" not in message, (template.id, part.id, spec.when)
+
+
+def test_a_statement_points_to_its_figure_in_words(bank):
+    """'... falls back to 14 N·m at 1.35 s (the figure).' reads as a stray note; a sheet says what the figure does."""
+    found = [(t.id, seed) for t in bank for seed in range(5)
+             if "(the figure)" in make_variant(t, seed).statement]
+    assert not found, found[:5]
