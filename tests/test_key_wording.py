@@ -125,3 +125,31 @@ def test_a_statement_points_to_its_figure_in_words(bank):
     found = [(t.id, seed) for t in bank for seed in range(5)
              if "(the figure)" in make_variant(t, seed).statement]
     assert not found, found[:5]
+
+
+def test_a_bearing_reaction_is_worked_before_its_row_in_the_force_table(bank):
+    """The force table's row for Y (R_Y = 0.1275 kg·m at 162.3°) appeared with no line working it out
+    from the moment polygon: R_Y = l_Y R_Y / l_Y and its closing angle are lines of the working."""
+    for seed in range(30):
+        variant = make_variant(bank.get("balancing.bearing_reactions"), seed)
+        shown = [line.name for line in solution(variant).lines]
+        assert "RY" in shown and "theta_RY" in shown, seed
+        assert shown.index("theta_RY") < shown.index("RX"), seed
+
+
+def test_a_balancing_direction_in_the_working_is_within_one_turn(bank):
+    """'θ_FX = 198.9° + 180° = 378.9°' with 18.88° in the answers: a direction is written within 0-360°,
+    the turn it drops written in the line ('+ 180° − 360°'). Crank angles of a firing order stay as the text
+    counts them (480°, 600°: Example 2.7)."""
+    import math
+
+    found = []
+    for template in bank:
+        if template.chapter != 2:
+            continue
+        for seed in range(40):
+            for step in make_variant(template, seed).steps:
+                if step.name.startswith("theta_") and step.unit == "rad" and isinstance(step.value, float):
+                    if not 0 <= step.value < 2 * math.pi:
+                        found.append((template.id, seed, step.name, round(math.degrees(step.value), 2)))
+    assert not found, found[:5]

@@ -207,7 +207,7 @@ def bearing_reactions(p, d):
     fx, fy = components(d, "F", "F", [("mrA", None), ("mrB", "thetaB"), ("mrC", "thetaC"), ("RY", "theta_RY")],
                         "kg*m", "forces, with Y's",
                         table=("Forces, with Y's", FORCE, _forces("ABC", (None, "thetaB", "thetaC")) +
-                               [["Y", "@RY", "@theta_RY"]], "m r"))
+                               [["Y", "@RY", "@theta_RY"]], "m r"), shown=("RY", "theta_RY"))
     r_x = d.step("RX", math.hypot(fx, fy), "kg*m", symbol=r"R_X", formula=magnitude_formula("F_0", "F_90"),
                  note="the m·r that would close the force polygon, in plane X")
     closing_angle(d, "theta_RX", r"\theta_{R_X}", "F_0", "F_90")
@@ -215,8 +215,10 @@ def bearing_reactions(p, d):
     for tag, size in (("Y", r_y), ("X", r_x)):
         force = d.step(f"F{tag}", mb.rotating_force(size, p.N), "N", symbol=f"F_{tag}", formula=rf"@R{tag}\,@N^2",
                        note=f"the dynamic force at {tag}")
-        angle = d.step(f"theta_F{tag}", d.value_of(f"theta_R{tag}") + PI, "rad", symbol=rf"\theta_{{F_{tag}}}",
-                       formula=rf"@theta_R{tag} + 180^\circ", note="on the bearing: opposite the balancing direction")
+        opposite = d.value_of(f"theta_R{tag}") + PI
+        turn = r" - 360^\circ" if opposite >= 2 * PI else ""   # kept within a turn, as the answer is given
+        angle = d.step(f"theta_F{tag}", opposite - 2 * PI if turn else opposite, "rad", symbol=rf"\theta_{{F_{tag}}}",
+                       formula=rf"@theta_R{tag} + 180^\circ{turn}", note="on the bearing: opposite the balancing direction")
         forces[tag] = (force, angle)
     _bearing_mistakes(p, d, forces)
 

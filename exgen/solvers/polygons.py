@@ -14,14 +14,15 @@ from .angles import direction_formula
 ZERO = 1e-9
 
 
-def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic: int = 1, table=None):
+def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic: int = 1, table=None, shown=()):
     """Steps `name_0` and `name_90`: Σ size·cos kθ and Σ size·sin kθ over terms (size name, angle name or
     None for a term on the 0° line), k the harmonic (2 for secondary cranks). Returns the two values;
     float noise below 1e-9 of the terms' sizes is taken as zero.
 
     With `table` = (title, columns, rows, size), the sums are shown as the course text works them: a
     table with a row per term (its given cells, then its two components) and the sums as its Σ row.
-    `size` is the LaTeX of the sized quantity (m r l), heading the component columns."""
+    `size` is the LaTeX of the sized quantity (m r l), heading the component columns; `shown` names steps
+    the table lists that keep their own line too (a row worked out just before, whose working the table lacks)."""
     value = d.value_of
     angle = (lambda a: harmonic * value(a) if a else 0.0)
     parts = [(value(s) * math.cos(angle(a)), value(s) * math.sin(angle(a)) if a else 0.0) for s, a in terms]
@@ -41,7 +42,7 @@ def components(d, name: str, symbol: str, terms, unit: str, what: str, harmonic:
         k = "2" if harmonic == 2 else ""
         heads = [(rf"${size}\cos {k}\theta$", unit), (rf"${size}\sin {k}\theta$", unit)]
         d.table(title, list(columns) + heads, [list(r) + list(p) for r, p in zip(rows, parts)],
-                total=["Σ"] + [None] * (len(columns) - 1) + [f"@{name}_0", f"@{name}_90"])
+                total=["Σ"] + [None] * (len(columns) - 1) + [f"@{name}_0", f"@{name}_90"], shown=tuple(shown))
     return x, y
 
 
