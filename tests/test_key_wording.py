@@ -153,3 +153,19 @@ def test_a_balancing_direction_in_the_working_is_within_one_turn(bank):
                     if not 0 <= step.value < 2 * math.pi:
                         found.append((template.id, seed, step.name, round(math.degrees(step.value), 2)))
     assert not found, found[:5]
+
+
+def test_a_table_hides_no_line_whose_working_it_lacks(bank):
+    """A table that lists a step's value spares the step its own line only where the table shows how it is
+    made (m·r beside m and r): a car wheel's share of the weight, W(b − a)/2b, appeared only as a number in
+    the reactions table, worked nowhere."""
+    from exgen.derivation import Table
+
+    needs_its_line = {"gyroscopes.car_wheel_reactions": ("W_f", "W_r"),
+                      "balancing.bearing_reactions": ("RY", "theta_RY")}
+    for template_id, names in needs_its_line.items():
+        for seed in range(10):
+            variant = make_variant(bank.get(template_id), seed)
+            assert any(isinstance(i, Table) and set(names) & i.names for i in variant.inserts)
+            shown = {line.name for line in solution(variant).lines}
+            assert set(names) <= shown, (template_id, seed)

@@ -162,7 +162,8 @@ def car_wheel_reactions(p, d):
                       d.value_of("W_r" if axle == "f" else "W_f") + out * (pw + pc) + sign_e * pe)
             d.mistake(name, "centrifugal_ignored", d.value_of(share) + out * pw + sign_e * pe)
     d.table("Each wheel's reaction: its share of the weight, then the changes (+ more load, − less)",
-            [("Wheel",), ("$W$", "N"), ("$P_w$", "N"), ("$P_e$", "N"), ("$P_c$", "N"), ("$R$", "N")], rows)
+            [("Wheel",), ("$W$", "N"), ("$P_w$", "N"), ("$P_e$", "N"), ("$P_c$", "N"), ("$R$", "N")], rows,
+            shown=("W_f", "W_r"))   # each wheel's share of the weight is worked nowhere else
     d.require(min(d.value_of(n) for n in ("R_fl", "R_fr", "R_rl", "R_rr")) > 0.15 * weight / 4,
               "an inner wheel nearly lifts: the car would be at the limit of overturning")
 
