@@ -96,20 +96,36 @@ def unit_info(text: str) -> UnitInfo:
     return known if known is not None else _ask_pint(text)
 
 
+def spelled(text: str) -> str:
+    """A unit as pint spells it in full ("N*m" -> "newton * meter"), stored or asked."""
+    known = _unit_table_rows().get(text)
+    return known[1] if known is not None else _spell_with_pint(text)
+
+
 @lru_cache(maxsize=1)
 def _unit_table() -> dict[str, UnitInfo]:
+    return {unit: info for unit, (info, _) in _unit_table_rows().items()}
+
+
+@lru_cache(maxsize=1)
+def _unit_table_rows() -> dict[str, tuple[UnitInfo, str]]:
     text = resources.files("exgen").joinpath(UNIT_TABLE).read_text("utf-8")
     rows = (line.split("\t") for line in text.splitlines() if line and not line.startswith("#"))
-    return {unit: UnitInfo(unit, float(factor), dims, int(angle)) for unit, factor, dims, angle in rows}
+    return {unit: (UnitInfo(unit, float(factor), dims, int(angle)), name) for unit, factor, dims, angle, name in rows}
 
 
 def unit_table(names) -> str:
     """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.units`)."""
-    lines = ["# unit, factor to coherent SI, dimension, angles: pint's answers, stored (python -m exgen.units)"]
+    lines = ["# unit, factor to coherent SI, dimension, angles, pint's spelling: pint's answers, stored "
+             "(python -m exgen.units)"]
     for name in sorted(set(names) - {"", "1", "dimensionless"}):
         info = _ask_pint(name)
-        lines.append(f"{name}\t{info.factor!r}\t{info.dims}\t{info.angle}")
+        lines.append(f"{name}\t{info.factor!r}\t{info.dims}\t{info.angle}\t{_spell_with_pint(name)}")
     return "\n".join(lines) + "\n"
+
+
+def _spell_with_pint(text: str) -> str:
+    return str(registry().parse_units(normalise_unit(text)))
 
 
 def _ask_pint(text: str) -> UnitInfo:
@@ -271,17 +287,28 @@ COMMON_UNITS = ("N", "kN", "MN", "N*m", "kN*m", "Nm", "W", "kW", "MW", "J", "kJ"
 
 
 def bank_units(bank) -> set[str]:
-    """Every unit a bank's templates write: parameters, parts and reported quantities."""
-    found = set(COMMON_UNITS) | set(_KIND_EXAMPLES)
+    """Every unit a bank's templates write: parameters, parts, reported quantities, and the steps and
+    table columns of a variant of each (the units their worked solutions are in)."""
+    from .variant import make_variant
+
+    from .render.working import SI_UNITS
+
+    found = set(COMMON_UNITS) | set(_KIND_EXAMPLES) | set(SI_UNITS.values())
     for template in bank:
         found |= {p.unit for p in template.params} | {p.unit for p in template.parts}
         found |= {r.unit for r in template.report}
+        variant = make_variant(template, 1)
+        found |= {s.unit for s in variant.steps if isinstance(s.unit, str)}
+        found |= {c.unit for table in variant.inserts for c in getattr(table, "columns", ())}
     return found
 
 
 if __name__ == "__main__":  # python -m exgen.units: rewrite the stored table from pint and the bank
     from pathlib import Path
 
-    from .bank import load_bank
+    from exgen import units  # this file runs as __main__: the module the others import is another one
+    from exgen.bank import load_bank
 
-    Path(__file__).parent.joinpath(UNIT_TABLE).write_text(unit_table(bank_units(load_bank())), encoding="utf-8")
+    units._unit_table_rows = dict  # ask pint for everything, the stored table unread
+    Path(__file__).parent.joinpath(UNIT_TABLE).write_text(units.unit_table(units.bank_units(load_bank())),
+                                                          encoding="utf-8")

@@ -132,5 +132,6 @@ def test_the_stored_unit_table_is_what_pint_says_for_every_unit_the_bank_uses(ba
 
     stored = units._unit_table()
     assert all(units._ask_pint(name) == info for name, info in stored.items())
+    assert all(units._spell_with_pint(name) == spelled for name, (_, spelled) in units._unit_table_rows().items())
     missing = units.bank_units(bank) - set(stored) - {"", "1", "dimensionless"}
     assert not missing, f"units missing from {units.UNIT_TABLE}: {sorted(missing)}; run python -m exgen.units"

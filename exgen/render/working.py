@@ -46,7 +46,7 @@ def si_unit(unit: str) -> str | None:
 
 @lru_cache(maxsize=64)
 def _names_an_energy(unit: str) -> bool:
-    spelled = str(units.registry().parse_units(units.normalise_unit(unit)))
+    spelled = units.spelled(unit)
     return any(word in spelled for word in ENERGY_WORDS)
 
 
