@@ -49,9 +49,16 @@ def signs_of_copying(batch: BatchResult, assignment: Assignment, bank, secret: b
 
 
 def _keys(batch, assignment, bank, secret) -> dict[tuple[str, str], dict[str, tuple[Any, Any]]]:
-    """(slot, part) -> student -> (expected value, part spec), for every student on the roster."""
+    """(slot, part) -> student -> (expected value, part spec), for every student on the roster: read from
+    the results of the sheets graded (grading built them), built again from the secret for the others."""
     out: dict[tuple[str, str], dict[str, tuple[Any, Any]]] = defaultdict(dict)
     for result in batch.sheets:
+        if result.status == GRADED and all(p.value is not None for q in result.questions for p in q.parts):
+            for question in result.questions:
+                specs = {spec.id: spec for spec in bank.get(question.template).parts}
+                for part in question.parts:
+                    out[(question.slot, part.part_id)][result.student.id] = (part.value, specs[part.part_id])
+            continue
         try:
             sheet = build_sheet(assignment, result.student, bank, secret)
         except ExgenError:
@@ -89,19 +96,30 @@ def _matches(spec, given, expected, widen: float = 1.0) -> bool:
         return False
 
 
-def _near(index, value) -> list[str]:
-    """Students whose key lies within WINDOW of `value` (all of them for values that are not numbers)."""
-    values, students, others = index
+def _near(index, value) -> list[tuple[Any, list[str]]]:
+    """(key, the students who have it) for every key within WINDOW of `value` (every key, for values that
+    are not numbers)."""
+    values, groups, others = index
     if not _is_number(value):
-        return students + others
+        return groups + others
     low, high = value - WINDOW * abs(value) - 1e-12, value + WINDOW * abs(value) + 1e-12
-    return [students[i] for i in range(bisect.bisect_left(values, low), bisect.bisect_right(values, high))] + others
+    return [groups[i] for i in range(bisect.bisect_left(values, low), bisect.bisect_right(values, high))] + others
 
 
 def _index(per_student: dict[str, tuple[Any, Any]]):
+    """Keys that are numbers sorted, one student each; the others with the students who share each, so
+    that a choice half the class has is compared once, not once per student."""
     numbers = sorted((v, s) for s, (v, _) in per_student.items() if _is_number(v))
-    others = [s for s, (v, _) in per_student.items() if not _is_number(v)]
-    return [v for v, _ in numbers], [s for _, s in numbers], others
+    shared: dict[Any, tuple[Any, list[str]]] = {}
+    others = []
+    for student, (value, _) in per_student.items():
+        if _is_number(value):
+            continue
+        try:
+            shared.setdefault((type(value), value), (value, []))[1].append(student)
+        except TypeError:  # a value that cannot be a dictionary key is compared on its own
+            others.append((value, [student]))
+    return [v for v, _ in numbers], [(v, [s]) for v, s in numbers], list(shared.values()) + others
 
 
 def _other_variant(answers, keys) -> list[dict]:
@@ -112,8 +130,8 @@ def _other_variant(answers, keys) -> list[dict]:
         index = _index(per_student)
         for student, (value, typed) in wrong.items():
             spec = per_student[student][1]
-            owners = [other for other in _near(index, value)
-                      if other != student and _matches(spec, value, per_student[other][0], COPIED)]
+            owners = [other for key, students in _near(index, value) if _matches(spec, value, key, COPIED)
+                      for other in students if other != student]
             if not owners or len(owners) > MAX_SHARED:
                 continue
             for owner in owners:

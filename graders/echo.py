@@ -14,6 +14,20 @@ LOOK_ALIKES = str.maketrans({"`": "'", "<": "\u2039", ">": "\u203a"})
 _ASCII_CONTROLS = {c: " " for c in [*range(32), 127]}
 
 
+class _Blanking(dict):
+    """A str.translate table turning every character never echoed into a space: it learns each character
+    the first time one is seen (the category looked up once, not at every echo), up to a bound."""
+
+    def __missing__(self, code: int):
+        out = " " if unicodedata.category(chr(code)) in _DROPPED else code
+        if len(self) < 20_000:  # hostile text of every code point cannot grow it without end
+            self[code] = out
+        return out
+
+
+_BLANKING = _Blanking(_ASCII_CONTROLS)
+
+
 def shown(text, limit: int = 80, word: int | None = None) -> str:
     """`text` as one line of at most `limit` characters, without characters that hide or reorder text.
     With `word`, any run of more than `word` non-blank characters is cut short first, so a message
@@ -23,10 +37,7 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
         text = re.sub(rf"\S{{{word + 1},}}", lambda m: m.group()[:word] + ELLIPSIS, text)
     if len(text) > 8 * limit:  # never scan more than needed: a 1 MB answer costs what a short one does
         text = text[: 8 * limit] + ELLIPSIS
-    if text.isascii():  # of ASCII, only the controls are dropped
-        cleaned = text.translate(_ASCII_CONTROLS)
-    else:
-        cleaned = "".join(" " if unicodedata.category(c) in _DROPPED else c for c in text)
+    cleaned = text.translate(_ASCII_CONTROLS if text.isascii() else _BLANKING)
     cleaned = " ".join(cleaned.split())
     return cleaned if len(cleaned) <= limit else cleaned[: limit - 1].rstrip() + ELLIPSIS
 

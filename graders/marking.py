@@ -129,7 +129,7 @@ class _Result:
     def make(self, status: str, message: str, mistake: str | None = None) -> PartResult:
         points = self.max_points if status in (CORRECT, CARRIED) else 0.0
         return PartResult(self.part.id, self.ask, self.part.unit, self.text, self.answer.text, status,
-                          points, self.max_points, message, mistake)
+                          points, self.max_points, message, mistake, self.answer.value)
 
 
 def is_blank(text: str | None) -> bool:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import statistics
+from typing import Any
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -35,6 +36,8 @@ class PartResult:
     max_points: float
     message: str
     mistake: str | None = None
+    #: the expected answer as a value (what `expected` writes), for comparing answers across sheets
+    value: Any = field(default=None, compare=False, repr=False)
 
     @property
     def correct(self) -> bool:
