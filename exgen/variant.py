@@ -71,33 +71,31 @@ class Variant:
     derived: tuple[Reading, ...] = ()  # the template's `report:` quantities, in their units
     worked_uses: frozenset[str] = frozenset()  # givens the solver read or a formula or table names
 
-    @property
+    @cached_property
     def statement(self) -> str:
         """The statement with this variant's values (written when first read: grading never reads it)."""
-        return self._texts[0]
+        return self._text(self.template.statement, "statement")
 
-    @property
+    @cached_property
     def asks(self) -> Mapping[str, str]:
         """What each part asks, with this variant's values (written when first read)."""
-        return self._texts[1]
+        return MappingProxyType({p.id: self._text(p.ask, f"parts.{p.id}.ask") for p in self.template.parts})
 
     @property
     def unused(self) -> frozenset[str]:
         """Givens its text and working leave out (one idler: the second's teeth)."""
-        return self._texts[2]
+        self.statement, self.asks  # noqa: B018  (written, they note what they printed)
+        used = self._printed | self.worked_uses
+        return frozenset(p.name for p in self.params if p.name not in used)
 
     @cached_property
-    def _texts(self) -> tuple[str, Mapping[str, str], frozenset[str]]:
-        printed: set[str] = set()
-        context = {p.name: _Watched(p, printed) for p in self.params}
-        statement = self._text(self.template.statement, "statement", context)
-        asks = MappingProxyType({p.id: self._text(p.ask, f"parts.{p.id}.ask", context) for p in self.template.parts})
-        used = printed | self.worked_uses
-        return statement, asks, frozenset(p.name for p in self.params if p.name not in used)
+    def _printed(self) -> set[str]:
+        """Givens the statement and asks written so far printed or tested."""
+        return set()
 
-    def _text(self, text: str, key: str, context: dict) -> str:
+    def _text(self, text: str, key: str) -> str:
         try:
-            return render_text(text, context)
+            return render_text(text, {p.name: _Watched(p, self._printed) for p in self.params})
         except Exception as exc:
             if not type(exc).__module__.startswith("jinja2"):
                 raise
