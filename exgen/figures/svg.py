@@ -55,6 +55,7 @@ class Drawing:
         self.box = [math.inf, math.inf, -math.inf, -math.inf]  # x0, y0, x1, y1 of what is drawn
         self.labels: list[TextBox] = []
         self.segments: list[tuple[tuple[float, float], tuple[float, float]]] = []
+        self._extents: list[tuple] = []  # each segment's extent, with it (segments are only ever appended)
         self.rings: list[tuple[tuple[float, float], float]] = []  # circle outlines
 
     def add(self, element: str) -> None:
@@ -132,13 +133,20 @@ class Drawing:
             ox0, oy0, ox1, oy1 = other.extent()
             if ox0 <= x1 and ox1 >= x0 and oy0 <= y1 and oy1 >= y0:
                 count += boxes_overlap(box, other, gap)
-        for p, q in self.segments:
-            if min(p[0], q[0]) <= x1 and max(p[0], q[0]) >= x0 and min(p[1], q[1]) <= y1 and max(p[1], q[1]) >= y0:
+        for sx0, sy0, sx1, sy1, p, q in self._segment_extents():
+            if sx0 <= x1 and sx1 >= x0 and sy0 <= y1 and sy1 >= y0:
                 count += segment_hits(box, p, q, gap)
         for c, r in self.rings:
             if c[0] - r <= x1 and c[0] + r >= x0 and c[1] - r <= y1 and c[1] + r >= y0:
                 count += circle_hits(box, c, r, gap)
         return count
+
+    def _segment_extents(self) -> list[tuple]:
+        """(x0, y0, x1, y1, p, q) of every segment drawn so far: worked out once each, not at every clash test."""
+        extents = self._extents
+        for p, q in self.segments[len(extents):]:
+            extents.append((min(p[0], q[0]), min(p[1], q[1]), max(p[0], q[0]), max(p[1], q[1]), p, q))
+        return extents
 
     def crosses(self, points, gap: float = CLEAR) -> int:
         """How many drawn lines and labels the polyline `points` would cross or touch."""
