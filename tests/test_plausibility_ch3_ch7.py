@@ -33,3 +33,16 @@ def test_an_overhung_disc_does_not_bend_its_shaft_beyond_a_working_stress(bank):
     for v in variants(bank, "vibration.cantilever_end_mass"):
         stress = 32 * v.si["m"] * G * v.si["l"] / (math.pi * v.si["d"] ** 3)
         assert stress <= 60e6 * (1 + 1e-9), (v.seed, stress / 1e6)
+
+
+# ---- governors ----------------------------------------------------------------------------------
+
+def test_a_spring_controlled_governor_runs_near_the_radii_its_spring_was_measured_at(bank):
+    """The controlling-force line holds over the radii it was measured between, and a little beyond
+    (Problem 4.6 asks 20 % below its range); a ball path at 0.4 or 2.4 times the first radius was drawn,
+    on a spring and a governor that cannot reach it."""
+    for v in variants(bank, "governors.spring_controlled"):
+        r1, r2, f1, f2, m, omega = (v.si[n] for n in ("r1", "r2", "F1", "F2", "m", "N"))
+        slope = (f2 - f1) / (r2 - r1)
+        radius = (f1 - slope * r1) / (m * omega ** 2 - slope)
+        assert 0.6 * r1 <= radius <= 1.4 * r2, (v.seed, radius, r1, r2)
