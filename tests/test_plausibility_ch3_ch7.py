@@ -46,3 +46,13 @@ def test_a_spring_controlled_governor_runs_near_the_radii_its_spring_was_measure
         slope = (f2 - f1) / (r2 - r1)
         radius = (f1 - slope * r1) / (m * omega ** 2 - slope)
         assert 0.6 * r1 <= radius <= 1.4 * r2, (v.seed, radius, r1, r2)
+
+
+def test_a_connecting_rod_on_a_knife_edge_is_built_like_one(bank):
+    """Rods are built alike: mass grows as the cube of size (a car's 0.6 kg rod at h ≈ 100 mm, a diesel's
+    15 kg at 240 mm), and the radius of gyration is about half the small end's distance from the centre of
+    gravity. A 1 kg 'rod' with its small end 400 mm from its centre of gravity was drawn."""
+    for v in variants(bank, "vibration.compound_pendulum"):
+        m, h, k = v.si["m"], v.si["h"], v.si["k_G"]
+        assert 200 <= m / h ** 3 <= 2500, (v.seed, m, h)
+        assert 0.3 * h <= k <= 0.85 * h, (v.seed, k, h)
