@@ -56,3 +56,12 @@ def test_a_connecting_rod_on_a_knife_edge_is_built_like_one(bank):
         m, h, k = v.si["m"], v.si["h"], v.si["k_G"]
         assert 200 <= m / h ** 3 <= 2500, (v.seed, m, h)
         assert 0.3 * h <= k <= 0.85 * h, (v.seed, k, h)
+
+
+def test_a_beams_radius_of_gyration_fits_its_length(bank):
+    """A beam AOB's radius of gyration about O is near a uniform beam's, k² = (a³ + b³)/3(a + b): a 200 mm
+    radius of gyration on arms of 80 mm each was drawn."""
+    for v in variants(bank, "vibration.beam_two_springs"):
+        a, b, k = v.si["a"], v.si["b"], v.si["k"]
+        uniform = math.sqrt((a ** 3 + b ** 3) / (3 * (a + b)))
+        assert 0.65 * uniform <= k <= 1.35 * uniform, (v.seed, a, b, k)
