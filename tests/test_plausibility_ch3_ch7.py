@@ -65,3 +65,20 @@ def test_a_beams_radius_of_gyration_fits_its_length(bank):
         a, b, k = v.si["a"], v.si["b"], v.si["k"]
         uniform = math.sqrt((a ** 3 + b ** 3) / (3 * (a + b)))
         assert 0.65 * uniform <= k <= 1.35 * uniform, (v.seed, a, b, k)
+
+
+def test_a_bell_cranks_radius_of_gyration_fits_its_arms(bank):
+    """The body ADE's radius of gyration about D is near a uniform bell crank's on arms DA and DE
+    (30 mm on arms of 200 and 150 mm, a third of a uniform crank's, was drawn)."""
+    for v in variants(bank, "vibration.damped_pendulum_lever"):
+        a, l, k = v.si["a"], v.si["l"], v.si["k_D"]
+        uniform = math.sqrt((a ** 3 + l ** 3) / (3 * (a + l)))
+        assert 0.55 * uniform <= k <= 1.45 * uniform, (v.seed, a, l, k)
+
+
+def test_a_flywheel_on_a_stepped_shaft_has_a_rim_of_a_real_section(bank):
+    """Mass at a radius of gyration k is a rim of section m/(ρ 2πk): at least about 40 mm square in cast iron
+    (30 kg at k = 0.8 m, a hoop 1.6 m across of 29 mm section, was drawn)."""
+    for v in variants(bank, "vibration.stepped_shaft"):
+        section = v.si["m"] / (7200 * 2 * math.pi * v.si["k"])
+        assert section >= 0.0015, (v.seed, v.si["m"], v.si["k"])
