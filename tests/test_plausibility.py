@@ -267,3 +267,14 @@ def test_inner_cranks_carry_masses_like_the_outer_ones(bank):
 def test_every_engine_and_belt_template_reports_what_makes_it_real(bank):
     for template_id in itertools.chain(ENGINES, BELT_POWER, CORRECTIONS, ["gears.gear_pair_power"]):
         assert bank.get(template_id).report, template_id
+
+
+@pytest.mark.parametrize("template_id", ["belts.driven_speed_slip", "belts.compound_drive", "belts.driven_pulley_diameter"])
+def test_every_flat_belt_runs_at_a_flat_belts_speed(bank, template_id):
+    """The speed-ratio drives run their belts at up to 30 m/s, as the power drives do: a 50 cm motor pulley at
+    1800 rpm (47 m/s) was drawn."""
+    for v in variants(bank, template_id):
+        belts = [si(v, "N1") * si(v, "d1") / 2]
+        if template_id == "belts.compound_drive":
+            belts.append(step(v, "N2") * si(v, "d3") / 2)
+        assert max(belts) <= 30 * (1 + 1e-9), (v.seed, belts)
