@@ -278,3 +278,12 @@ def test_every_flat_belt_runs_at_a_flat_belts_speed(bank, template_id):
         if template_id == "belts.compound_drive":
             belts.append(step(v, "N2") * si(v, "d3") / 2)
         assert max(belts) <= 30 * (1 + 1e-9), (v.seed, belts)
+
+
+@pytest.mark.parametrize("template_id", ["gears.teeth_for_centre_distance", "gears.pitch_geometry", "gears.gear_pair_power"])
+def test_spur_gears_run_at_a_spur_gears_pitch_line_velocity(bank, template_id):
+    """Spur gears run at up to about 25 m/s at the pitch line: a 480 mm pinion at 1800 rpm (45 m/s) was drawn."""
+    for v in variants(bank, template_id):
+        m = si(v, "m")
+        pinion = step(v, "t1") if template_id == "gears.teeth_for_centre_distance" else si(v, "t1")
+        assert si(v, "N1") * m * pinion / 2 <= 25 * (1 + 1e-9), v.seed
