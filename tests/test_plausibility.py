@@ -301,3 +301,11 @@ def test_every_templates_ranges_give_their_reasons():
         if block and "#" not in block.group(1):
             silent.append(path.name)
     assert not silent, silent
+
+
+@pytest.mark.parametrize("template_id", ["gears.hoist_torque", "gears.haulage_power", "gears.gear_pair_power"])
+def test_a_single_spur_pair_reduces_by_ten_to_one_at_most(bank, template_id):
+    """Example 1.12's 200/20 is about the most one spur pair is made to give: 240 teeth driven by 15 (16 : 1)
+    was drawn for a hoist."""
+    for v in variants(bank, template_id):
+        assert si(v, "t2") <= 10 * si(v, "t1"), (v.seed, si(v, "t1"), si(v, "t2"))
