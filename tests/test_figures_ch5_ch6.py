@@ -117,3 +117,21 @@ def test_the_key_sketch_draws_the_solution_s_vectors(bank, seed):
             dx, dy = float(line.get("x2")) - float(line.get("x1")), float(line.get("y2")) - float(line.get("y1"))
             ux, uy = AXES[axis]
             assert (dx * ux + dy * uy) * sign > 0 and abs(dx * uy - dy * ux) < 1e-6 * math.hypot(dx, dy) + 0.02
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_the_rail_cars_wheel_radius_is_dimensioned_from_rail_to_axle(bank, seed):
+    """'r = 370 mm' stood beside the axle with nothing measured; the radius is a dimension line from the rail
+    head up to the axle, beside the label."""
+    from exgen.figures import figure_svg
+    from exgen.figures.checks import labels, strokes
+
+    variant = make_variant(bank.get("gyroscopes.rail_car_limiting_speed"), seed)
+    svg = figure_svg(variant)
+    scale = 200 / variant.si["x"]
+    label = next(l for l in labels(svg) if l.text.startswith("r = "))
+    segments, _ = strokes(svg)
+    near = [(p, q) for p, q in segments if abs(p[0] - q[0]) < 1e-6
+            and abs(abs(p[1] - q[1]) - variant.si["r"] * scale) < 0.5
+            and min(abs(p[0] - label.box.x0), abs(p[0] - label.box.x1)) < 30]
+    assert near, (seed, label.text)

@@ -130,7 +130,7 @@ def rail_car(variant) -> str:
     d.place([((-10, cg_y + 5), "end"), ((0, cg_y + 22), "middle")], "G", style="italic")
     dimension(d, (-half, 0), (half, 0), x.label("x"), side=-1, offset=24)
     dimension(d, (0, -8), (0, cg_y), h.label("h"), side=-1, offset=half + 70)
-    d.place([((-half - 16, axle + 5), "end"), ((-half - 16, axle - 14), "end")], r.label("r"))
+    dimension(d, (-half - 8, -8), (-half - 8, axle), r.label("r"), side=1, offset=22)   # rail head to axle
     d.place([((0, cg_y - 74), "middle")], "seen from behind", size=13, style="italic")
     ox, oy = -half - 330, 40
     d.polygon([(ox - 14, oy - 40), (ox + 14, oy - 40), (ox + 14, oy + 40), (ox - 14, oy + 40)], fill="white", width=LINE)
