@@ -169,3 +169,14 @@ def test_a_table_hides_no_line_whose_working_it_lacks(bank):
             assert any(isinstance(i, Table) and set(names) & i.names for i in variant.inserts)
             shown = {line.name for line in solution(variant).lines}
             assert set(names) <= shown, (template_id, seed)
+
+
+def test_a_rim_note_names_the_rim_s_own_material(bank):
+    """A cast-steel rim's key said 'a cast-iron rim is kept below about 35 m/s'."""
+    template = bank.get("flywheels.flywheel_rim")
+    said = {}
+    for seed in range(60):
+        variant = make_variant(template, seed)
+        note = next(line.note for line in solution(variant).lines if line.name == "v")
+        said.setdefault(variant.param("rho").si >= 7500, set()).add("cast-steel rim" in note)
+    assert said == {True: {True}, False: {False}}

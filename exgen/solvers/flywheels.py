@@ -74,6 +74,10 @@ def speed_fluctuation(p, d):
     d.mistake("Cs", "k_not_squared", delta_e / (p.m * p.k * p.N ** 2))
 
 
+#: Densities from which a rim is cast steel (7800 kg/m³) rather than cast iron (7000-7250 kg/m³).
+CAST_STEEL = 7500.0
+
+
 def flywheel_rim(p, d):
     """Problem 3.1: ΔE from nine loops; the rim mass for a speed band; its rectangular section."""
     dA, largest = _crossings(p, d, 9, name_extremes=False)
@@ -96,7 +100,8 @@ def flywheel_rim(p, d):
     d.mistake("b", "square_section", math.sqrt(area))
     d.mistake("b", "ratio_inverted", thickness / p.ratio)
     d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
-           note="a cast-iron rim is kept below about 35 m/s")
+           note="the rim's speed at its mean radius: " + ("within cast iron's 35 m/s; a cast-steel rim stands more"
+                 if p.rho >= CAST_STEEL else "a cast-iron rim is kept below about 35 m/s"))
 
 
 # ---- Example 3.2: a torque-time diagram ----------------------------------------------------------
