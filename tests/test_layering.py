@@ -4,7 +4,7 @@ import ast
 from pathlib import Path
 
 ROOT = Path(__file__).parent.parent
-SHELL = {"exgen/cli.py"}  # the application's shell: it lazily imports every command's module
+SHELL = {"exgen/cli/commands.py"}  # the application's shell: it lazily imports every command's module
 
 
 def imports(path: Path):

@@ -1,0 +1,277 @@
+"""What each `exgen` command does: read its arguments, call the library, print. Every module a command
+needs is imported when the command runs, so `exgen list` does not pay for PDF, grading or the web."""
+from __future__ import annotations
+
+import json
+import os
+import secrets
+import sys
+from pathlib import Path
+
+from ..errors import ExgenError
+
+CLOSE_MISTAKE = "lands within"  # exgen.variant.mistakes_apart's warning, for values a user gave
+CLOSE_MISTAKE_MEANS = ("a mistake that close is marked right: for these values the grader cannot tell it from "
+                       "the answer; sheets never draw such values")
+EXPORT_SUFFIX = {"moodle": ".xml", "qti": ".zip", "canvas": ".zip"}
+SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.seeds.PRACTICE_SEEDS)
+
+
+def _progress(items, total, label="working"):
+    from ..progress import progress
+
+    return progress(items, total, label)
+
+
+def _bank(args, full: bool = True):
+    """The bank; `full` False for commands that only list or draw (see exgen.bank.load_bank)."""
+    from ..bank import load_bank
+
+    return load_bank([Path(p) for p in args.bank], full)
+
+
+def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
+    """The course secret and where it came from: --secret-file, else $EXGEN_SECRET, else `default`."""
+    from ..seeds import ENV_VAR, load_secret
+
+    explicit = bool(args.secret_file)
+    path = Path(args.secret_file) if explicit else default
+    secret, source = load_secret(path, create=create, explicit=explicit)
+    if explicit and os.environ.get(ENV_VAR):
+        print(f"Using the secret file {path}; ${ENV_VAR} is set but --secret-file wins.", file=sys.stderr)
+    if source.endswith("(new)"):
+        print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
+        source = source[: -len(" (new)")]
+    return secret, source
+
+
+def _assignment_and_roster(args):
+    """The bank, the assignment (checked against it) and the roster path (option, else the file's)."""
+    from ..assignment import load_assignment
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank)
+    roster = Path(args.roster) if args.roster else assignment.roster
+    return bank, assignment, roster
+
+
+def cmd_list(args) -> int:
+    from ..render.unicode_math import text_to_plain
+
+    bank = _bank(args, full=False)
+    rows = [t for t in bank if args.chapter is None or t.chapter == args.chapter]
+    width = max((len(t.id) for t in rows), default=0)
+    for t in rows:
+        source = f"  [{text_to_plain(t.source)}]" if t.source else ""
+        print(f"{t.id:<{width}}  {text_to_plain(t.title)}{source}")
+    print(f"\n{len(rows)} template(s)", file=sys.stderr)
+    return 0
+
+
+def cmd_show(args) -> int:
+    from ..render.text import variant_text
+    from ..variant import make_variant
+
+    template = _bank(args, full=False).get(args.id)
+    seed = args.seed if args.seed is not None else secrets.randbits(32)
+    print(variant_text(make_variant(template, seed), key=args.key))
+    if args.seed is None:
+        print(f"\n(seed {seed}: `exgen show {args.id} --seed {seed}` shows this variant again)", file=sys.stderr)
+    return 0
+
+
+def cmd_solve(args) -> int:
+    from ..render.unicode_math import text_to_plain
+    from ..solve import parse_settings, solve
+
+    template = _bank(args).get(args.id)
+    variant, warnings = solve(template, parse_settings(args.set))
+    close = [w for w in warnings if CLOSE_MISTAKE in w]
+    for warning in warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+        if close and warning is close[-1]:
+            print(f"  ({CLOSE_MISTAKE_MEANS})", file=sys.stderr)
+    if args.json:
+        print(json.dumps(solution_json(variant), indent=2, ensure_ascii=False))
+        return 0
+    if args.steps:
+        from ..render.text import variant_text
+
+        print(variant_text(variant, key=True))
+        return 0
+    print(text_to_plain(template.title))
+    for part_id, answer in variant.answers.items():
+        print(f"  ({part_id}) {text_to_plain(variant.asks[part_id])}: {answer.text}")
+    return 0
+
+
+def _given_json(p) -> dict:
+    """A given as printed, and in the SI unit the working uses (ω in rad/s for a speed in rpm)."""
+    from ..render.working import si_unit
+
+    out = {"value": p.text, "unit": p.unit}
+    if isinstance(p.si, float) and p.unit and si_unit(p.unit) not in (None, p.unit):
+        out.update(si=p.si, si_unit=si_unit(p.unit))
+    return out
+
+
+def solution_json(variant) -> dict:
+    """Every part's value and unit, and every step's: its ask as plain text (and as written, with LaTeX)."""
+    from ..render.unicode_math import text_to_plain
+
+    def plain(value):
+        return value if isinstance(value, (int, float, str)) else str(value)
+
+    return {
+        "template": variant.template.id,
+        "given": {p.name: _given_json(p) for p in variant.params},
+        "parts": {
+            part_id: {"ask": text_to_plain(variant.asks[part_id]), "ask_latex": variant.asks[part_id],
+                      "value": plain(a.value), "unit": a.part.unit, "text": a.text}
+            for part_id, a in variant.answers.items()
+        },
+        "steps": [{"name": s.name, "value": plain(s.value), "unit": s.unit} for s in variant.steps],
+        "derived": [{"what": r.spec.what, "value": r.value, "unit": r.spec.unit, "plausible": [r.spec.low, r.spec.high],
+                     "ok": r.plausible} for r in variant.derived],
+    }
+
+
+def cmd_generate(args) -> int:
+    from ..assignment import load_roster
+    from ..generate import default_jobs, generate
+
+    bank, assignment, roster_path = _assignment_and_roster(args)
+    if roster_path is None:
+        raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
+    students = load_roster(roster_path)
+    if args.print and args.no_pdf:
+        raise ExgenError("--print joins the sheets' PDFs: leave out --no-pdf")
+    secret, source = _secret(args, assignment.secret_file, create=True)
+    recorded = source if source.startswith("$") else str(Path(source).resolve())
+    issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
+                      key_pdf=not args.no_key_pdf, jobs=args.jobs or default_jobs(), progress=_progress,
+                      secret_source=recorded, print_bundle=args.print)
+    kinds = "sheet (Markdown, PDF), answer form" if not args.no_pdf else "sheet (Markdown), answer form"
+    keys = "keys (Markdown, PDF)" if not (args.no_pdf or args.no_key_pdf) else "keys (Markdown)"
+    print(f"{len(issued.sheets)} student(s): {kinds} in {issued.out / 'students'}; {keys} in {issued.out / 'keys'}")
+    if args.print:
+        print(f"for printing: {issued.out / 'print' / 'sheets.pdf'} (every sheet, roster order)"
+              + (f", {issued.out / 'print' / 'keys.pdf'} (every key)" if not args.no_key_pdf else ""))
+    print(f"manifest: {issued.manifest}")
+    return 0
+
+
+def cmd_grade(args) -> int:
+    from graders.grade import grade_issued
+    from graders.report import write_results
+
+    from ..assignment import load_roster
+    from ..manifest import read_manifest
+    from ..outdir import check_target
+
+    manifest = read_manifest(Path(args.issued))
+    submissions = Path(args.submissions)
+    if not submissions.is_dir():
+        raise ExgenError(f"{submissions}: no such folder" if not submissions.exists() else
+                         f"{submissions}: not a folder: give the folder holding the answer files")
+    check_target(Path(args.out), "grade")  # before any work: a folder that cannot be replaced stops here
+    bank = _bank(args)
+    recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \
+        else None
+    secret, source = _secret(args, recorded, create=False)
+    roster = load_roster(Path(args.roster)) if args.roster else None
+    from ..generate import default_jobs
+
+    batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
+                         progress=_progress, jobs=args.jobs or default_jobs())
+    for warning in batch.warnings:
+        print(f"WARNING: {warning}", file=sys.stderr)
+    from graders.copying import signs_of_copying
+
+    signs = signs_of_copying(batch, manifest.assignment, bank, secret, manifest.codes)
+    paths = write_results(batch, Path(args.out), signs, canvas_id=args.canvas_id or "")
+    print(batch.summary())
+    for name, path in paths.items():
+        print(f"{name}: {path}")
+    return 0
+
+
+def cmd_export(args) -> int:
+    from ..export import writer
+    from ..export.pool import build_pool, notices
+
+    suffix = EXPORT_SUFFIX[args.format]
+    if Path(args.out).suffix.lower() != suffix:  # a .zip of Moodle XML would fail at import, after all the work
+        raise ExgenError(f"--out {args.out}: {args.format} writes a {suffix} file (e.g. --out pool-{args.format}{suffix})")
+    bank = _bank(args)
+    files = [s for s in args.sources if s.lower().endswith((".yaml", ".yml"))]
+    if files and (len(files) > 1 or len(args.sources) > 1):
+        raise ExgenError("give one assignment file, or template ids, not both")
+    if files:
+        from ..assignment import load_assignment
+
+        assignment = load_assignment(Path(files[0]), bank)
+        specs = [(q.slot, bank.get(q.template), q.points or bank.get(q.template).points) for q in assignment.questions]
+        title, scope, default = assignment.title, assignment.id, assignment.secret_file
+    else:
+        templates = [bank.get(i) for i in args.sources]
+        specs = [(f"q{n}", t, t.points) for n, t in enumerate(templates, start=1)]
+        title, scope, default = args.title or "exgen problems", "pool", None
+    secret, _ = _secret(args, default, create=default is not None)
+    pool = build_pool(args.title or title, scope, specs, secret, args.variants, progress=_progress)
+    for notice in notices(pool):
+        print(f"note: {notice}", file=sys.stderr)
+    path = writer(args.format)(pool, Path(args.out))
+    print(f"{len(pool.questions)} question(s) x {args.variants} variant(s) as {args.format}: {path}")
+    return 0
+
+
+def cmd_report(args) -> int:
+    from graders.item_report import write_report
+
+    for name, path in write_report(Path(args.graded), Path(args.out) if args.out else None).items():
+        print(f"{name}: {path}")
+    return 0
+
+
+def cmd_validate(args) -> int:
+    from ..validate import validate_bank
+
+    bank = _bank(args)
+    templates = [bank.get(i) for i in args.ids] if args.ids else list(bank)
+    reports = validate_bank(templates, seeds=args.seeds, progress=_progress)
+    failed = [r for r in reports if not r.ok]
+    for report in reports:
+        print(report.line())
+        for problem in report.problems + report.warnings + report.details():
+            print(f"    {problem}")
+    print(f"\n{len(reports) - len(failed)} of {len(reports)} template(s) valid over {args.seeds} seeds each")
+    return 1 if failed else 0
+
+
+def _practice(args):
+    """The practice core over the progress file, limited to an assignment's templates if one is given."""
+    from ..assignment import load_assignment
+    from practice.session import Practice
+    from practice.store import Store
+
+    bank = _bank(args)
+    assignment = load_assignment(Path(args.assignment), bank) if args.assignment else None
+    return Practice(bank, Store(Path(args.db)), assignment)
+
+
+def cmd_practice(args) -> int:
+    from practice.terminal import Terminal, stats_text
+
+    practice = _practice(args)
+    if args.stats:
+        print(stats_text(practice))
+        return 0
+    scope = practice.catalogue.choose(args.chapter, args.topic)
+    return Terminal(practice, scope, open_figures=args.open).run()
+
+
+def cmd_serve(args) -> int:
+    from practice.web.server import serve
+
+    return serve(_practice(args), host=args.host, port=args.port, open_browser=args.open)
