@@ -15,22 +15,16 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Iterable
 
 from . import parallel
 from .assignment import Assignment, Sheet, Student, build_sheet
 from .bank import Bank
 from .manifest import MANIFEST, build_manifest, write_manifest
 from .outdir import check_target, replacing
+from .progress import Progress, silent
 from .render.answer_form import answer_form
 
 KIND = "generate"  # the marker an issued folder carries (exgen.outdir)
-
-Progress = Callable[[Iterable, int, str], Iterable]
-
-
-def _no_progress(items, total, label):
-    return items
 
 
 @dataclass(frozen=True)
@@ -41,7 +35,7 @@ class Issued:
 
 
 def draw_sheets(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes,
-                progress: Progress = _no_progress) -> list[Sheet]:
+                progress: Progress = silent) -> list[Sheet]:
     return [build_sheet(assignment, s, bank, secret) for s in progress(students, len(students), "drawing")]
 
 
@@ -93,7 +87,7 @@ def default_jobs() -> int:
 
 
 def generate(assignment: Assignment, students: list[Student], bank: Bank, secret: bytes, out: Path,
-             *, pdf: bool = True, key_pdf: bool = True, jobs: int = 1, progress: Progress = _no_progress,
+             *, pdf: bool = True, key_pdf: bool = True, jobs: int = 1, progress: Progress = silent,
              secret_source: str = "", print_bundle: bool = False) -> Issued:
     """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
     (exgen.outdir); with jobs > 1 the PDFs are made in that many processes (Markdown alone is made in

@@ -4,13 +4,21 @@ from __future__ import annotations
 
 import sys
 import time
-from typing import Iterable, Iterator, TextIO
+from typing import Callable, Iterable, Iterator, TextIO
+
+#: What a long run reports its work through: (items, total, label) -> the items, as they are worked.
+Progress = Callable[[Iterable, int, str], Iterable]
 
 #: Without a terminal: a line each time another tenth is done, and at least every so many seconds,
 #: once a run has lasted QUIET_SECONDS (a quick run prints nothing).
 STEPS = 10
 EVERY_SECONDS = 15.0
 QUIET_SECONDS = 2.0
+
+
+def silent(items: Iterable, total: int, label: str = "") -> Iterable:
+    """No report: the library's default (the command line passes `progress`)."""
+    return items
 
 
 def progress(items: Iterable, total: int, label: str = "working", stream: TextIO | None = None) -> Iterable:

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Callable, Iterable
 
 from markupsafe import Markup
 
@@ -18,17 +17,12 @@ from ..answertypes import answer_type
 from ..answertypes.lms import NoLmsForm
 from ..figures import figure_svg, key_figure_svgs, Drawn
 from ..mistake_messages import message_for
+from ..progress import Progress, silent
 from ..render.context import key_context
 from ..seeds import pool_seed
 from ..template import Template
 from ..variant import Variant, make_variant
 from .html import render
-
-Progress = Callable[[Iterable, int, str], Iterable]
-
-
-def _no_progress(items, total, label):
-    return items
 
 
 @dataclass(frozen=True)
@@ -54,7 +48,7 @@ class Pool:
 
 
 def build_pool(title: str, scope: str, specs: list[tuple[str, Template, float]], secret: bytes, count: int,
-               progress: Progress = _no_progress) -> Pool:
+               progress: Progress = silent) -> Pool:
     """`count` variants of each (slot, template, points), drawn from the secret's pool seeds."""
     jobs = [(n, slot, template, points, i) for n, (slot, template, points) in enumerate(specs, start=1)
             for i in range(1, count + 1)]
