@@ -49,8 +49,10 @@ def _case_meant(text: str, unit: str) -> str | None:
     """The answer with its unit written in the case of the one unit of the asked family it matches
     ignoring case; None when no unit or more than one (mW and MW) does."""
     typed = text.rstrip()
-    family = next((f for f in unit_families() if unit in f), (unit,)) if unit else ()
-    names = [name for name, _ in accepted_units(unit)]
+    if not unit or not typed[-1:].isalpha() and not typed[-1:].isdigit():
+        return None
+    family = next((f for f in unit_families() if unit in f), (unit,))
+    names = [name for other in family for name in (units.pretty_unit(other), other.replace("*", " "))]
     names += [written for written, meant in units.aliases().items() if meant.replace(" ", "") in family]
     found = {name for name in names if len(name) < len(typed)
              and typed[-len(name):].casefold() == name.casefold() and typed[-len(name):] != name
