@@ -33,6 +33,9 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
     With `word`, any run of more than `word` non-blank characters is cut short first, so a message
     quoting a huge answer keeps its own words ("cannot read '9999…' as a number ...")."""
     text = str(text)
+    if len(text) <= min(limit, word or limit) and text.isascii() and text.isprintable() \
+            and "  " not in text and text == text.strip():
+        return text  # already one clean line: most of what a grading run echoes (statuses, ids, numbers)
     if word:
         text = re.sub(rf"\S{{{word + 1},}}", lambda m: m.group()[:word] + ELLIPSIS, text)
     if len(text) > 8 * limit:  # never scan more than needed: a 1 MB answer costs what a short one does

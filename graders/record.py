@@ -51,7 +51,9 @@ def _path(path: Path | None) -> str:
 
 
 def write_record(record: dict, path: Path) -> None:
-    path.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    """Compact: an indented dump takes Python's pure-Python encoder, six times slower (0.8 s for a class of
+    600); `python -m json.tool results.json` shows it indented."""
+    path.write_text(json.dumps(record, ensure_ascii=False, separators=(",", ":")) + "\n", encoding="utf-8")
 
 
 def read_record(folder: Path) -> dict:
