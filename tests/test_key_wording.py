@@ -180,3 +180,19 @@ def test_a_rim_note_names_the_rim_s_own_material(bank):
         note = next(line.note for line in solution(variant).lines if line.name == "v")
         said.setdefault(variant.param("rho").si >= 7500, set()).add("cast-steel rim" in note)
     assert said == {True: {True}, False: {False}}
+
+
+def test_a_rotor_s_spin_is_worked_with_its_speed_in_rpm(bank):
+    """Every gyroscope key wrote 'ω = 2πN/60 = 288 rad/s' with no numbers: now '2π × 2750/60'."""
+    from exgen.render.targets import PLAIN
+
+    checked = 0
+    for template in (t for t in bank if t.id.startswith("gyroscopes.")):
+        for seed in range(3):
+            variant = make_variant(template, seed)
+            for line in solution(variant).lines:
+                if line.name == "omega" and line.formula and "{60}" in line.formula.formula.latex:
+                    rpm = next(p for p in variant.params if p.unit == "rpm")
+                    assert f"2π × {rpm.text}" in " = ".join(line.chain(PLAIN)), (template.id, seed)
+                    checked += 1
+    assert checked >= 12

@@ -31,8 +31,8 @@ def word(vector, frame: str) -> str:
 
 def spin_speed(p, d, name: str = "N"):
     """ω from the rotor speed in rpm, with the rpm-as-rad/s slip."""
-    return d.step("omega", getattr(p, name), "rad/s", symbol=r"\omega", formula=r"\frac{2\pi N}{60}",
-                  note="the rotor's spin, N in rpm")
+    return d.step("omega", getattr(p, name), "rad/s", symbol=r"\omega", formula=rf"\frac{{2\pi\,@{name}}}{{60}}",
+                  shown="rad/s", note="the rotor's spin, N in rpm")
 
 
 def precession(p, d, speed: str = "v", radius: str = "R"):
