@@ -126,3 +126,12 @@ def test_a_long_footer_never_runs_into_the_page_number(preamble):
         assert footer in source
         text = pypdf.PdfReader(io.BytesIO(typst.compile(source.encode("utf-8")))).pages[0].extract_text()
         assert "CC2DPage" not in text and "Page 1 of 1" in text, (extra, text)
+
+
+@pytest.mark.parametrize("gap", [560, 600, 620, 640, 660, 680])
+def test_a_question_s_answers_stay_on_one_page_with_their_heading(preamble, gap):
+    """A key's Answers table ran from the foot of one page onto the next."""
+    cells = ", ".join(f"[({chr(97 + i)}) {_mark(f'row{i}')}], [*1.234 kN*], [1 %], [1 mark]" for i in range(8))
+    source = preamble + f"#v({gap}pt)\n#answers-table({cells})\n"
+    pages = {m["page"] for m in marks(source, "probe")}
+    assert len(pages) == 1
