@@ -26,7 +26,7 @@ from .versions import data_digest
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure", "key_figures", "report"}
-PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain"}
+PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain", "given"}
 REPORT_KEYS = {"what", "value", "unit", "range"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "hints"}  # and the type's own
 MAX_VALUES = 100_000
@@ -208,8 +208,13 @@ class _Reader:
                 self.error(where, "must be a mapping such as {min: 1, max: 5, step: 0.5, unit: m}")
                 continue
             self.unknown_keys(spec, PARAM_KEYS, where)
+            given = spec.get("given", True)
+            if not isinstance(given, bool):
+                self.error(where + ("given",), "must be true or false (false: only what the figure draws)")
+                given = True
             common = dict(name=name, unit=str(spec.get("unit", "")), label=str(spec.get("label", "")),
-                          symbol=str(spec.get("symbol", "")), domain=self.domain(spec.get("domain"), where))
+                          symbol=str(spec.get("symbol", "")), domain=self.domain(spec.get("domain"), where),
+                          given=given)
             if "equals" in spec:
                 formula = self.derived(spec["equals"], {p.name for p in out if not _is_text(p)}, where + ("equals",))
                 if formula:

@@ -24,6 +24,7 @@ class ParamSpec:
     choices: tuple = ()
     equals: str = ""  # a given worked out from earlier ones (e.g. the loop that closes a cycle)
     domain: str = ""  # the values that make physical sense, as an interval (exgen.domains); "" derives it
+    given: bool = True  # False: it only chooses what the figure draws (the figure is the given), not a key's given
 
     @property
     def derived(self) -> bool:

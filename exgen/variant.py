@@ -83,10 +83,12 @@ class Variant:
 
     @property
     def unused(self) -> frozenset[str]:
-        """Givens its text and working leave out (one idler: the second's teeth)."""
+        """Givens its text and working leave out (one idler: the second's teeth), and those that only choose
+        what the figure draws (`given: false`)."""
         self.statement, self.asks  # noqa: B018  (written, they note what they printed)
         used = self._printed | self.worked_uses
-        return frozenset(p.name for p in self.params if p.name not in used)
+        drawn_only = {spec.name for spec in self.template.params if not spec.given}
+        return frozenset(p.name for p in self.params if p.name not in used or p.name in drawn_only)
 
     @cached_property
     def _printed(self) -> set[str]:

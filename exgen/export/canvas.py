@@ -12,7 +12,7 @@ from pathlib import Path
 
 from markupsafe import Markup
 
-from .html import LATEX_HTML, render
+from .html import CANVAS_HTML, render
 from .pool import Pool, make_item
 from .zips import write_zip
 
@@ -44,7 +44,7 @@ def groups(pool: Pool) -> tuple[list[Group], dict[str, bytes]]:
     """The question groups, and the images (zip path -> bytes) their questions show."""
     out, images = [], {}
     for question in pool.questions:
-        items = [make_item(question, i, v, LATEX_HTML, FILEBASE + IMAGES) for i, v in enumerate(question.variants, 1)]
+        items = [make_item(question, i, v, CANVAS_HTML, FILEBASE + IMAGES) for i, v in enumerate(question.variants, 1)]
         items = [item for item in items if item.gaps]
         if not items:
             continue
@@ -74,7 +74,7 @@ def canvas_files(pool: Pool) -> dict[str, bytes]:
     ident = f"exgen-{pool.scope}"
     found, images = groups(pool)
     points = sum(g.points for g in found)
-    description = LATEX_HTML.text(f"{pool.title}: problems drawn by exgen; each part comes from its own variant.")
+    description = CANVAS_HTML.text(f"{pool.title}: problems drawn by exgen; each part comes from its own variant.")
     files = {
         "imsmanifest.xml": render("canvas_manifest.xml.j2", ident=ident, images=list(images)).lstrip().encode("utf-8"),
         "non_cc_assessments/": b"",

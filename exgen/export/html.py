@@ -46,6 +46,17 @@ class LatexHtml(Markdown):
         return Markup("\\[") + escape(" ".join(piece for row in rows for piece in row)) + Markup("\\]")
 
 
+class CanvasHtml(LatexHtml):
+    """LaTeX HTML for Canvas, which loads MathJax only for text holding \\( (or $$), never for \\[ alone: a
+    worked line is \\(\\displaystyle ...\\) in its own paragraph, so a solution of display lines alone
+    (a key with no givens) is typeset too."""
+
+    name = "canvas-html"
+
+    def equation(self, rows: list[list[str]]) -> Markup:
+        return Markup("\\(\\displaystyle ") + escape(" ".join(piece for row in rows for piece in row)) + Markup("\\)")
+
+
 class MathmlXhtml(Markdown):
     """XHTML whose math is MathML (QTI 2.1 allows MathML 2 in item bodies and feedback): composed as
     LaTeX, as for the keys, and converted where it meets prose (exgen.export.mathml2)."""
@@ -67,7 +78,7 @@ class MathmlXhtml(Markdown):
         return Markup("".join(qti_math(" ".join(row), display=True) for row in rows))
 
 
-LATEX_HTML, MATHML_XHTML = LatexHtml(), MathmlXhtml()
+LATEX_HTML, CANVAS_HTML, MATHML_XHTML = LatexHtml(), CanvasHtml(), MathmlXhtml()
 
 
 @lru_cache(maxsize=1)

@@ -43,12 +43,12 @@ def ask_text(variant, part, indent: str = "") -> str:
 def key_lines(variant, worked=None) -> list[str]:
     """The given data, the worked solution (`worked`, if already made) and the answers."""
     worked = worked or solution(variant)
-    out = ["Given"]
+    out = ["Given"] if worked.given else []
     for g in worked.given:
         si = f" = {g.si_text}" if g.si_text else ""
         label = f"  ({PLAIN.text(g.label)})" if g.label else ""
         out.append(f"  {PLAIN.math(g.symbol)} = {g.printed}{si}{label}")
-    out += ["", "Worked solution"]
+    out += ["", "Worked solution"] if out else ["Worked solution"]
     for block in worked.blocks:
         if isinstance(block, TableBlock):
             out += table_text(block)
