@@ -51,8 +51,8 @@ def _case_meant(text: str, unit: str) -> str | None:
     typed = text.rstrip()
     if not unit or not typed[-1:].isalpha() and not typed[-1:].isdigit():
         return None
-    family = next((f for f in unit_families() if unit in f), (unit,))
-    names = [name for other in family for name in (units.pretty_unit(other), other.replace("*", " "))]
+    family = family_of(unit)
+    names = [name for other in family for name in written_as(other)]
     names += [written for written, meant in units.aliases().items() if meant.replace(" ", "") in family]
     found = {name for name in names if len(name) < len(typed)
              and typed[-len(name):].casefold() == name.casefold() and typed[-len(name):] != name
@@ -129,10 +129,19 @@ def accepted_units(unit: str) -> tuple[tuple[str, float], ...]:
     where that differs, as typed with a space for the product ("kN·m" and "kN m")."""
     if not unit:
         return ()
-    family = next((f for f in unit_families() if unit in f), (unit,))
     out: dict[str, float] = {}
-    for other in (unit, *(u for u in family if u != unit)):
+    for other in (unit, *(u for u in family_of(unit) if u != unit)):
         factor = 1.0 if other == unit else units.convert(1.0, unit, other)
-        for name in (units.pretty_unit(other), other.replace("*", " ")):
+        for name in written_as(other):
             out.setdefault(name, factor)
     return tuple(out.items())
+
+
+def family_of(unit: str) -> tuple[str, ...]:
+    """The units of `unit`'s family (exgen/data/unit_families.txt), or the unit alone."""
+    return next((f for f in unit_families() if unit in f), (unit,))
+
+
+def written_as(unit: str) -> tuple[str, str]:
+    """How a unit is typed: its printed name and with a space for the product ("kN·m", "kN m")."""
+    return units.pretty_unit(unit), unit.replace("*", " ")

@@ -31,6 +31,8 @@ class LatexHtml(Markdown):
     """HTML whose math is LaTeX between \\( \\) (inline) and \\[ \\] (display), for MathJax."""
 
     name = "latex-html"
+    #: How a worked line is delimited (Canvas's own below).
+    display = ("\\[", "\\]")
 
     def inline(self, math_source: str) -> Markup:
         return Markup("\\(") + escape(math_source) + Markup("\\)")
@@ -43,7 +45,8 @@ class LatexHtml(Markdown):
         return escape(text)
 
     def equation(self, rows: list[list[str]]) -> Markup:
-        return Markup("\\[") + escape(" ".join(piece for row in rows for piece in row)) + Markup("\\]")
+        opening, closing = self.display
+        return Markup(opening) + escape(" ".join(piece for row in rows for piece in row)) + Markup(closing)
 
 
 class CanvasHtml(LatexHtml):
@@ -52,9 +55,7 @@ class CanvasHtml(LatexHtml):
     (a key with no givens) is typeset too."""
 
     name = "canvas-html"
-
-    def equation(self, rows: list[list[str]]) -> Markup:
-        return Markup("\\(\\displaystyle ") + escape(" ".join(piece for row in rows for piece in row)) + Markup("\\)")
+    display = ("\\(\\displaystyle ", "\\)")
 
 
 class MathmlXhtml(Markdown):
