@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from .metrics import FROM_MATH, measure
 
@@ -43,6 +44,11 @@ class Run:
 def runs(content: str) -> list[Run]:
     """'ω₁ = 2 m/s²' -> [ω][1 sub][ = 2 m/s][2 sup]: scripts are set as smaller digits, never as the
     font's own script glyphs (most text fonts lack them and would fall back to another font)."""
+    return list(_runs(content))
+
+
+@lru_cache(maxsize=4096)
+def _runs(content: str) -> tuple[Run, ...]:
     out: list[Run] = []
     for char in content:
         shift = 1 if char in SUBSCRIPTS else -1 if char in SUPERSCRIPTS else 0
@@ -52,7 +58,7 @@ def runs(content: str) -> list[Run]:
             out[-1] = Run(out[-1].text + plain, shift, math)
         else:
             out.append(Run(plain, shift, math))
-    return out
+    return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -98,19 +104,26 @@ class TextBox:
 
 
 def text_width(content: str, size: float = 14.0, bold: bool = False, italic: bool = False) -> float:
-    return sum(measure(r.text, bold, italic).width * size * r.scale for r in runs(content))
+    return sum(measure(r.text, bold, italic).width * size * r.scale for r in _runs(content))
 
 
-def text_box(at, content: str, anchor: str = "middle", size: float = 14.0, bold: bool = False,
-             italic: bool = False, angle: float = 0.0) -> TextBox:
-    """The ink box of `content` with its baseline starting, centred or ending (anchor) at `at`."""
+@lru_cache(maxsize=4096)
+def _extent(content: str, size: float, bold: bool, italic: bool) -> tuple[float, float, float]:
+    """(width, ink above, ink below the baseline) of a label: a label is tried at many spots, measured once."""
     width, above, below = 0.0, 0.0, 0.0
-    for run in runs(content):
+    for run in _runs(content):
         ink = measure(run.text, bold, italic)
         s = size * run.scale
         width += ink.width * s
         above = max(above, ink.above * s - run.dy * size)
         below = max(below, ink.below * s + run.dy * size)
+    return width, above, below
+
+
+def text_box(at, content: str, anchor: str = "middle", size: float = 14.0, bold: bool = False,
+             italic: bool = False, angle: float = 0.0) -> TextBox:
+    """The ink box of `content` with its baseline starting, centred or ending (anchor) at `at`."""
+    width, above, below = _extent(content, size, bold, italic)
     x0 = at[0] - {"start": 0.0, "middle": width / 2, "end": width}[anchor]
     return TextBox(x0, at[1] - above, x0 + width, at[1] + below, angle, (at[0], at[1]), content)
 
