@@ -156,7 +156,8 @@ class Sketch:
         else at the one with fewest clashes (ties to the earliest)."""
         best, fewest = None, math.inf
         for at, anchor, angle in candidates:
-            count = self.d.clashes(text_box(at, content, anchor, size, weight == "bold", style == "italic", angle))
+            count = self.d.clashes(text_box(at, content, anchor, size, weight == "bold", style == "italic", angle),
+                                   enough=fewest)
             if count < fewest:
                 best, fewest = (at, anchor, angle), count
             if count == 0:

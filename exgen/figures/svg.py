@@ -123,22 +123,29 @@ class Drawing:
 
     # ---- keeping labels clear --------------------------------------------------------------
 
-    def clashes(self, box: TextBox, gap: float = CLEAR) -> int:
-        """How many labels and drawn lines `box` would touch (0: it is clear). What lies outside the box's
+    def clashes(self, box: TextBox, gap: float = CLEAR, enough: float = math.inf) -> int:
+        """How many labels and drawn lines `box` would touch (0: it is clear), counted up to `enough` (a
+        spot that touches as many as the best so far is out of the running). What lies outside the box's
         extent is passed over before the exact tests, which keeps placing labels cheap."""
         x0, y0, x1, y1 = box.extent()
         x0, y0, x1, y1 = x0 - gap, y0 - gap, x1 + gap, y1 + gap
         count = 0
         for other in self.labels:
             ox0, oy0, ox1, oy1 = other.extent()
-            if ox0 <= x1 and ox1 >= x0 and oy0 <= y1 and oy1 >= y0:
-                count += boxes_overlap(box, other, gap)
+            if ox0 <= x1 and ox1 >= x0 and oy0 <= y1 and oy1 >= y0 and boxes_overlap(box, other, gap):
+                count += 1
+                if count >= enough:
+                    return count
         for sx0, sy0, sx1, sy1, p, q in self._segment_extents():
-            if sx0 <= x1 and sx1 >= x0 and sy0 <= y1 and sy1 >= y0:
-                count += segment_hits(box, p, q, gap)
+            if sx0 <= x1 and sx1 >= x0 and sy0 <= y1 and sy1 >= y0 and segment_hits(box, p, q, gap):
+                count += 1
+                if count >= enough:
+                    return count
         for c, r in self.rings:
-            if c[0] - r <= x1 and c[0] + r >= x0 and c[1] - r <= y1 and c[1] + r >= y0:
-                count += circle_hits(box, c, r, gap)
+            if c[0] - r <= x1 and c[0] + r >= x0 and c[1] - r <= y1 and c[1] + r >= y0 and circle_hits(box, c, r, gap):
+                count += 1
+                if count >= enough:
+                    return count
         return count
 
     def _segment_extents(self) -> list[tuple]:
@@ -164,7 +171,7 @@ class Drawing:
         best, fewest = None, math.inf
         for at, anchor in candidates:
             box = text_box(at, content, anchor, size, weight == "bold", style == "italic", angle)
-            count = self.clashes(box)
+            count = self.clashes(box, enough=fewest)
             if count < fewest:
                 best, fewest = (at, anchor), count
             if count == 0:

@@ -43,8 +43,10 @@ def latex_to_typst(latex: str) -> str:
         raise MathError(latex, str(exc).splitlines()[0]) from None
 
 
+@lru_cache(maxsize=16384)
 def escape_typst(prose: str) -> str:
-    """Plain text -> Typst markup that shows exactly that text."""
+    """Plain text -> Typst markup that shows exactly that text (kept: labels, notes and units recur on
+    every sheet)."""
     text = prose.translate(_TYPST_ESCAPES)
     text = text.replace("//", "/\\/").replace("/*", "/\\*").replace("-?", "-\\?")
     text = _DOTTED_UNIT.sub(_tight_unit, text)
@@ -75,6 +77,7 @@ def _tight_unit(match: re.Match) -> str:
     return "#box[" + match.group(0).replace("\u00b7", UNIT_DOT) + "]"
 
 
+@lru_cache(maxsize=16384)
 def escape_markdown(prose: str) -> str:
     """Plain text -> Markdown that shows exactly that text (no emphasis, links, lists or math)."""
     text = prose.translate(_MD_ESCAPES)
