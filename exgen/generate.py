@@ -90,19 +90,22 @@ def generate(assignment: Assignment, students: list[Student], bank: Bank, secret
              *, pdf: bool = True, key_pdf: bool = True, jobs: int = 1, progress: Progress = silent,
              secret_source: str = "", print_bundle: bool = False) -> Issued:
     """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
-    (exgen.outdir); with jobs > 1 the PDFs are made in that many processes (Markdown alone is made in
+    (exgen.outdir); with jobs > 1 the PDFs are made in that many processes, which start first and rebuild
+    their sheets themselves while this one draws every sheet for the manifest (Markdown alone is made in
     this one: starting processes would cost more than it saves)."""
     out = Path(out)
     check_target(out, KIND)  # before the slow part: a folder that cannot be replaced stops the run now
-    sheets = draw_sheets(assignment, students, bank, secret, progress)
-    manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
     with replacing(out, KIND) as folder:
-        if pdf and jobs > 1 and len(sheets) > 1:
-            written = parallel.run(_write_in_worker, [s.student for s in sheets], min(jobs, len(sheets)),
-                                   (assignment, bank, secret, folder, pdf, key_pdf), chunksize=2)
-            for _ in progress(written, len(sheets), "writing"):
-                pass
+        if pdf and jobs > 1 and len(students) > 1:
+            with parallel.pool(min(jobs, len(students)), (assignment, bank, secret, folder, pdf, key_pdf)) as workers:
+                written = workers.map(_write_in_worker, students, chunksize=2)
+                sheets = draw_sheets(assignment, students, bank, secret, progress)
+                manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
+                for _ in progress(written, len(sheets), "writing"):
+                    pass
         else:
+            sheets = draw_sheets(assignment, students, bank, secret, progress)
+            manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
             for sheet in progress(sheets, len(sheets), "writing"):
                 write_student(sheet, folder, pdf, key_pdf)
         if print_bundle and pdf:

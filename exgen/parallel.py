@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import gc
 from contextlib import contextmanager
-from typing import Callable, Iterable, Iterator
 
 _shared: tuple = ()
 
@@ -46,9 +45,3 @@ def pool(jobs: int, args: tuple = ()):
         if not tracker_was_running and hasattr(tracker, "_stop"):
             tracker._stop()
 
-
-def run(task: Callable, items: Iterable, jobs: int, args: tuple = (), chunksize: int = 1) -> Iterator:
-    """`task(item)` for each item in `jobs` processes, results in order; `task` reads `shared()` for
-    `args`. Every worker has ended when the iteration ends, or when it is abandoned."""
-    with pool(jobs, args) as executor:
-        yield from executor.map(task, items, chunksize=chunksize)

@@ -116,7 +116,7 @@ def test_markdown_only_starts_no_process_and_keys_can_skip_their_pdf(bank, tmp_p
     def refuse(*args, **kwargs):
         raise AssertionError("Markdown alone needs no worker process")
 
-    monkeypatch.setattr(exgen.parallel, "run", refuse)
+    monkeypatch.setattr(exgen.parallel, "pool", refuse)
     assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
     students = load_roster(EXAMPLES / "roster.csv")[:2]
     generate(assignment, students, bank, SECRET, tmp_path / "md", pdf=False, jobs=4)
