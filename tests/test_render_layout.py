@@ -14,6 +14,7 @@ import typst
 from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet, load_assignment
 from exgen.figures.metrics import FAMILY
 from exgen.render.jinja import render
+from exgen.render.mathtext import typst_string
 from exgen.render.pdf import key_typst, sheet_typst
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
@@ -135,3 +136,18 @@ def test_a_question_s_answers_stay_on_one_page_with_their_heading(preamble, gap)
     source = preamble + f"#v({gap}pt)\n#answers-table({cells})\n"
     pages = {m["page"] for m in marks(source, "probe")}
     assert len(pages) == 1
+
+
+@pytest.mark.parametrize("width", [153.48, 469.96, 470.5, 470.6, 520.0])
+def test_a_figure_is_shrunk_exactly_when_typst_finds_it_wider_than_the_column(preamble, width):
+    """Whether a figure is wider than the text block is read from its SVG when the source is written;
+    Typst's own measure of the image against the column must agree."""
+    from exgen.render.context import wider_than_text
+
+    svg = (f'<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 40" width="{width}pt" height="40pt">'
+           '<rect x="0" y="0" width="100" height="40" fill="white"/></svg>')
+    probe = ('#layout(size => [#metadata(measure(image(bytes(' + typst_string(svg) + '), format: "svg")).width'
+             ' > size.width) <wide>])\n')
+    assert marks(preamble + probe, "wide") == [wider_than_text(svg)]
+    wide = str(wider_than_text(svg)).lower()
+    typst.compile((preamble + f"#svg-figure({typst_string(svg)}, [A figure], wide: {wide})\n").encode("utf-8"))

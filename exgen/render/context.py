@@ -15,6 +15,7 @@ from .targets import PLAIN
 
 _SVG_TITLE = re.compile(r"<title>(.*?)</title>", re.DOTALL)
 _SVG_BOX = re.compile(r'viewBox="[-\d.]+ [-\d.]+ ([\d.]+) ([\d.]+)"')
+_SVG_WIDTH = re.compile(r'<svg\b[^>]*?\swidth="([\d.]+)pt"')
 #: A4 less the margins, in mm: the text block a question must fit, and its width.
 PAGE_HEIGHT, PAGE_WIDTH = 297 - 20 - 24, 210 - 44
 
@@ -37,6 +38,12 @@ def surely_fits(statement: str, svg: str | None, asks: list[str]) -> bool:
     if box:
         height += 0.88 * PAGE_WIDTH * float(box.group(2)) / float(box.group(1)) + 12  # figure and caption
     return height <= 0.8 * PAGE_HEIGHT
+
+
+def wider_than_text(svg: str) -> bool:
+    """Whether a figure, at the size its SVG states (pt), is wider than the text block (it is then shrunk to it)."""
+    found = _SVG_WIDTH.search(svg)
+    return bool(found) and float(found.group(1)) > PAGE_WIDTH * 72 / 25.4
 
 
 def figure_caption(number: int, svg: str | None) -> str:

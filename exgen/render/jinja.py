@@ -10,6 +10,7 @@ from pathlib import Path
 
 import jinja2
 
+from .context import wider_than_text
 from .mathtext import typst_string
 
 LAYOUTS = Path(__file__).parent / "layouts"
@@ -22,6 +23,7 @@ def environment() -> jinja2.Environment:
         trim_blocks=True, lstrip_blocks=True, keep_trailing_newline=True,
     )
     env.filters["typst_str"] = typst_string
+    env.filters["wider_than_text"] = lambda svg: "true" if wider_than_text(svg) else "false"
     return env
 
 
