@@ -318,10 +318,20 @@ def _mark(node, slots, order, trig, exponent, inverse):
 
 # ---- writing ------------------------------------------------------------------------------------
 
+@lru_cache(maxsize=16384)
+def written(latex: str, fills: tuple[str, ...], numbers: bool = False) -> str:
+    """`write` of the formula `latex` with slot i filled by fills[i], kept: a template's formula is written with
+    the same symbols (and often the same numbers) on every sheet."""
+    return write(parse(latex), lambda slot: fills[slot.index], numbers)
+
+
 def write(formula: Formula, fill, numbers: bool = False) -> str:
     """The formula as LaTeX, each slot replaced by fill(slot). With `numbers` (the substituted line), a
     thin space beside a slot becomes \\times and a trig argument of several factors is bracketed."""
     return re.sub(r" {2,}", " ", _write(formula.tree, fill, numbers, formula.slot_of)).strip()
+
+
+_THIN = Tok("cmd", ",")
 
 
 def _write(node, fill, numbers, slots) -> str:
@@ -329,7 +339,7 @@ def _write(node, fill, numbers, slots) -> str:
         out = []
         for i, item in enumerate(node.items):
             text = _write(item, fill, numbers, slots)
-            if numbers and item == Tok("cmd", ",") and (_is_slot(_next(node.items, i, -1)) or
+            if numbers and item == _THIN and (_is_slot(_next(node.items, i, -1)) or
                                                         _is_slot(_next(node.items, i, 1))):
                 text = " \\times "
             out.append(text)

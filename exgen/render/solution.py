@@ -20,7 +20,7 @@ from ..answertypes import answer_type
 from ..derivation import Column, Table, default_symbol
 from ..errors import ExgenError
 from .arithmetic import NotArithmetic, evaluate
-from .formula import Formula, FormulaError, parse, write
+from .formula import Formula, FormulaError, parse, written
 from .targets import MARKDOWN, PLAIN, SIG, number_parts
 from .working import Plan, in_unit, kind, plan, si_unit, used_in_si, values_of
 
@@ -47,11 +47,8 @@ class Filled:
 
     def latex(self, number) -> str:
         """LaTeX with numbers written by `number(Number) -> str`."""
-        return write(self.formula, lambda slot: self._fill(slot, number), self.numbers)
-
-    def _fill(self, slot, number):
-        fill = self.fills[slot.index]
-        return fill if isinstance(fill, str) else number(fill)
+        return written(self.formula.latex, tuple(f if isinstance(f, str) else number(f) for f in self.fills),
+                       self.numbers)
 
 
 @dataclass(frozen=True)
@@ -239,7 +236,7 @@ def _restates(formula: Formula, symbols, symbol: str) -> bool:
     def bare(latex: str) -> str:
         return latex.replace("\\,", "").replace(" ", "").replace("{", "").replace("}", "")
 
-    return bare(write(formula, lambda s: symbols[s.index])) == bare(symbol)
+    return bare(written(formula.latex, tuple(symbols))) == bare(symbol)
 
 
 def _latex_of(filled: Filled) -> str:
