@@ -20,6 +20,11 @@ INVERSES = {"sin": math.asin, "cos": math.acos, "tan": math.atan, "arcsin": math
 _SKIP = {SPACE, Tok("cmd", ","), Tok("cmd", ";"), Tok("cmd", ":"), Tok("cmd", "!"), Tok("cmd", "quad"),
          Tok("cmd", " ")}
 _TIMES = {Tok("cmd", "times"), Tok("cmd", "cdot")}
+# tokens compared against at every step, made once (a frozen dataclass is slow to make)
+_PLUS, _MINUS, _SLASH, _PI, _E = Tok("char", "+"), Tok("char", "-"), Tok("char", "/"), Tok("cmd", "pi"), Tok("char", "e")
+_SIGNS = (_PLUS, _MINUS)
+_DEGREE = [Tok("cmd", "circ")]
+_CONSTANTS = (_PI, _E)
 
 
 class NotArithmetic(FormulaError):
@@ -44,7 +49,7 @@ class _Evaluator:
 
     def expression(self, items, at):
         value, at = self.term(items, at)
-        while at < len(items) and items[at] in (Tok("char", "+"), Tok("char", "-")):
+        while at < len(items) and items[at] in _SIGNS:
             sign = 1 if items[at].text == "+" else -1
             right, at = self.term(items, at + 1)
             value += sign * right
@@ -57,7 +62,7 @@ class _Evaluator:
             if item in _TIMES:
                 right, at = self.unary(items, at + 1)
                 value *= right
-            elif item == Tok("char", "/"):
+            elif item == _SLASH:
                 right, at = self.unary(items, at + 1)
                 value /= right
             elif self.starts_operand(item):
@@ -71,10 +76,10 @@ class _Evaluator:
     def starts_operand(item) -> bool:
         if isinstance(item, (Group, Delim, Cmd, Script, Paren)) or function_name(item):
             return True
-        return isinstance(item, Tok) and (item.kind in ("num", "slot") or item in (Tok("cmd", "pi"), Tok("char", "e")))
+        return isinstance(item, Tok) and (item.kind in ("num", "slot") or item in _CONSTANTS)
 
     def unary(self, items, at):
-        if at < len(items) and items[at] in (Tok("char", "-"), Tok("char", "+")):
+        if at < len(items) and items[at] in _SIGNS:
             sign = -1 if items[at].text == "-" else 1
             value, at = self.unary(items, at + 1)
             return sign * value, at
@@ -94,7 +99,7 @@ class _Evaluator:
         if isinstance(item, Script):
             if item.sup is not None and _is_degree(item.sup):
                 return math.radians(self.primary(item.base)), at + 1
-            base = math.e if item.base == Tok("char", "e") else self.primary(item.base)
+            base = math.e if item.base == _E else self.primary(item.base)
             return self.scripts(base, item), at + 1
         return self.primary(item), at + 1
 
@@ -109,7 +114,7 @@ class _Evaluator:
                 return float(item.text)
             if item.kind == "slot":
                 return self.values[self.formula.order[id(item)]]
-            if item == Tok("cmd", "pi"):
+            if item == _PI:
                 return math.pi
             raise NotArithmetic(f"{item.text!r} is not a number")
         if isinstance(item, (Group, Paren)):
@@ -138,4 +143,4 @@ def _as_group(node) -> Group:
 
 def _is_degree(node) -> bool:
     items = node.items if isinstance(node, Group) else (node,)
-    return [i for i in items if i != SPACE] == [Tok("cmd", "circ")]
+    return [i for i in items if i != SPACE] == _DEGREE

@@ -181,9 +181,9 @@ def _answered(variant) -> dict[str, list[str]]:
 
 def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
     """The givens this variant uses, in the template's order (a second idler's teeth only with two idlers)."""
-    out = []
+    out, unused = [], variant.unused
     for p in variant.params:
-        if p.name in variant.unused:
+        if p.name in unused:
             continue
         si_text = None
         target = si_unit(p.unit) if p.unit else None
