@@ -67,3 +67,20 @@ def test_markup_in_names_is_printed_not_run(bank):
 def test_typst_failure_names_the_document():
     with pytest.raises(PdfError, match="cannot typeset the test: "):
         compile_pdf("#unknown-function()", "the test")
+
+
+def test_a_failed_document_leaves_the_next_one_whole(sheet):
+    """One compiler serves a thread's documents: a document Typst refused must not stay in it."""
+    good = sheet_pdf(sheet)
+    with pytest.raises(PdfError):
+        compile_pdf("#unknown-function()", "the test")
+    assert sheet_pdf(sheet) == good
+
+
+def test_each_thread_typesets_the_same_bytes(sheet):
+    from concurrent.futures import ThreadPoolExecutor
+
+    source = sheet_typst(sheet)
+    with ThreadPoolExecutor(3) as threads:
+        made = list(threads.map(lambda _: compile_pdf(source), range(3)))
+    assert made[0] == made[1] == made[2] == compile_pdf(source)
