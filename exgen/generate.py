@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from . import parallel
+from .allocator import faster_allocator
 from .assignment import Assignment, Sheet, Student, build_sheet
 from .bank import Bank
 from .manifest import MANIFEST, build_manifest, write_manifest
@@ -97,7 +98,8 @@ def generate(assignment: Assignment, students: list[Student], bank: Bank, secret
     check_target(out, KIND)  # before the slow part: a folder that cannot be replaced stops the run now
     with replacing(out, KIND) as folder:
         if pdf and jobs > 1 and len(students) > 1:
-            with parallel.pool(min(jobs, len(students)), (assignment, bank, secret, folder, pdf, key_pdf)) as workers:
+            with parallel.pool(min(jobs, len(students)), (assignment, bank, secret, folder, pdf, key_pdf),
+                               preload=faster_allocator()) as workers:
                 written = workers.map(_write_in_worker, students, chunksize=2)
                 sheets = draw_sheets(assignment, students, bank, secret, progress)
                 manifest = build_manifest(assignment, sheets, bank, secret, secret_source)
