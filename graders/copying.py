@@ -96,13 +96,23 @@ def _matches(spec, given, expected, widen: float = 1.0) -> bool:
         return False
 
 
-def _near(index, value) -> list[tuple[Any, list[str]]]:
-    """(key, the students who have it) for every key within WINDOW of `value` (every key, for values that
-    are not numbers)."""
+def _reach(spec, value) -> float | None:
+    """How far from `value` a key it matches as a copy can lie (the answer type's bound), if known."""
+    try:
+        return answer_type(spec).reach(value, spec, COPIED)
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+
+
+def _near(index, value, reach: float | None = None) -> list[tuple[Any, list[str]]]:
+    """(key, the students who have it) for every key within WINDOW of `value`, and within `reach` of it
+    when the answer type bounds how far a matching key can lie (every key, for values that are not numbers)."""
     values, groups, others = index
     if not _is_number(value):
         return groups + others
     low, high = value - WINDOW * abs(value) - 1e-12, value + WINDOW * abs(value) + 1e-12
+    if reach is not None:
+        low, high = max(low, value - reach), min(high, value + reach)
     return [groups[i] for i in range(bisect.bisect_left(values, low), bisect.bisect_right(values, high))] + others
 
 
@@ -130,7 +140,8 @@ def _other_variant(answers, keys) -> list[dict]:
         index = _index(per_student)
         for student, (value, typed) in wrong.items():
             spec = per_student[student][1]
-            owners = [other for key, students in _near(index, value) if _matches(spec, value, key, COPIED)
+            near = _near(index, value, _reach(spec, value))
+            owners = [other for key, students in near if _matches(spec, value, key, COPIED)
                       for other in students if other != student]
             if not owners or len(owners) > MAX_SHARED:
                 continue

@@ -108,3 +108,35 @@ def test_a_count_in_words_is_one_word_for_one_number(text):
     spec = PartSpec("a", "the number of belts", "n", type="integer", tol=Tolerance(0.0))
     with pytest.raises(FormatProblem):
         answer_type(spec).read(text, spec)
+
+
+@pytest.mark.parametrize("tol", [Tolerance(rel=0.01), Tolerance(rel=0.002, abs=0.05), Tolerance(rel=0.0, abs=0.5),
+                                 Tolerance(rel=0.0, sig=3), Tolerance(rel=0.0, abs=1e-3, sig=2), Tolerance(rel=0.3)])
+@pytest.mark.parametrize("widen", [0.2, 1.0, 3.0])
+def test_no_value_a_number_matches_lies_beyond_its_reach(tol, widen):
+    """`reach` bounds how far a matching expected value lies, so a caller may look no further: checked on
+    values at, around and across its edge, of every size and sign, and around powers of ten (sig figures)."""
+    import random
+
+    spec = PartSpec("a", "x", "v", "N", tol=tol)
+    kind = answer_type(spec)
+    rng = random.Random(5)
+    for _ in range(4000):
+        given = rng.choice([1, -1]) * 10 ** rng.uniform(-4, 6) * rng.choice([1, 1, 0.99999, 1.00001])
+        reach = kind.reach(given, spec, widen)
+        if reach is None:
+            continue
+        for off in (reach, reach * 0.999999, reach * 1.000001, reach * 2, reach * 0.5, reach * rng.random()):
+            for expected in (given - off, given + off, math.nextafter(given + off, math.inf),
+                             math.nextafter(given - off, -math.inf)):
+                if kind.matches(given, expected, spec, widen):
+                    assert abs(expected - given) <= reach, (given, expected, reach)
+    assert kind.reach(math.inf, spec, widen) is None
+    assert (kind.reach(0.0, spec, widen) is None) is (tol.rel * widen >= 0.5)  # no useful bound so wide
+
+
+def test_an_exact_type_reaches_no_further_than_its_value_and_a_direction_has_no_reach():
+    count = PartSpec("a", "x", "n", "", type="integer", tol=Tolerance(0.0))
+    assert answer_type(count).reach(5, count) == 0.0 and answer_type(count).matches(5.0, 5, count)
+    turn = PartSpec("a", "x", "th", "deg", type="angle", tol=Tolerance(rel=0.0, abs=0.5))
+    assert answer_type(turn).reach(10.0, turn) is None  # 370° is 10° as a direction

@@ -68,6 +68,10 @@ class Angle(Number):
         to_deg = self._to_deg(part)
         return angle(given * to_deg, expected * to_deg, part.tol.rel * widen, part.tol.abs * widen)
 
+    def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
+        """None: directions a turn apart match, so no distance bounds them."""
+        return None
+
     def slip(self, given, expected, part: PartSpec) -> Mistake | None:
         if isinstance(expected, (int, float)):
             to_deg = self._to_deg(part)

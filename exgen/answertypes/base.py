@@ -163,6 +163,12 @@ class AnswerType:
         """Right within the part's tolerance (scaled by `widen`, to tell "close" from "wrong")."""
         return given == expected
 
+    def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
+        """How far from `value` an expected value that `value` `matches` (with `widen`) can lie, at most:
+        a caller comparing one answer with a class's keys sorted by value looks only that far. None
+        when no such bound holds (values that are not numbers, or a tolerance that is not a distance)."""
+        return None
+
     def apart(self, mistake, answer, part: PartSpec) -> bool:
         """A named mistake is far enough from the right answer that neither can pass for the other:
         outside MISTAKE_GAP times the tolerance (for an exact type: different)."""

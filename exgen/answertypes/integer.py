@@ -69,6 +69,10 @@ class Integer(AnswerType):
     def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
         return integer(given, expected)
 
+    def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
+        """Exact: only the value itself matches."""
+        return 0.0 if isinstance(value, (int, float)) and math.isfinite(value) else None
+
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_EXACT if float(given.value).is_integer() else NOT_A_WHOLE_NUMBER
 

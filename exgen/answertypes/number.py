@@ -136,6 +136,19 @@ class Number(AnswerType):
             return numeric(given, expected, 0.0, max(tol.abs, sig_fig_tolerance(expected, tol.sig)) * widen)
         return numeric(given, expected, tol.rel * widen, tol.abs * widen)
 
+    def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
+        """`matches` allows |given - expected| <= max(abs, rel |expected|) (with `sig`, rel is at most
+        0.51 in the sig-th figure: 0.51 x 10^(1 - sig)), all widened; and |expected| <= |given| + that
+        distance. A little more, for rounding."""
+        if not (isinstance(value, (int, float)) and math.isfinite(value)):
+            return None
+        tol = part.tol
+        rel = (SIG_FIG_SLACK * 10.0 ** (1 - tol.sig) if tol.sig else tol.rel) * widen
+        if rel >= 0.5:
+            return None
+        distance = max(tol.abs * widen, rel * abs(value) / (1 - rel))
+        return distance * (1 + 1e-6) + 4 * math.ulp(value)
+
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_WITHIN.format(tol=self.tolerance_text(part))
 
