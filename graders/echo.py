@@ -33,9 +33,11 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
     With `word`, any run of more than `word` non-blank characters is cut short first, so a message
     quoting a huge answer keeps its own words ("cannot read '9999…' as a number ...")."""
     text = str(text)
-    if len(text) <= min(limit, word or limit) and text.isascii() and text.isprintable() \
-            and "  " not in text and text == text.strip():
-        return text  # already one clean line: most of what a grading run echoes (statuses, ids, numbers)
+    if len(text) <= limit and text.isprintable() and "  " not in text and text == text.strip() \
+            and (not word or len(text) <= word or max(map(len, text.split(" "))) <= word):
+        # already one clean line: most of what a grading run echoes (statuses, ids, numbers, "168.7°",
+        # messages). Printable text holds no character the cleaning below drops, and no blank but the space.
+        return text
     if word:
         text = re.sub(rf"\S{{{word + 1},}}", lambda m: m.group()[:word] + ELLIPSIS, text)
     if len(text) > 8 * limit:  # never scan more than needed: a 1 MB answer costs what a short one does
@@ -48,4 +50,9 @@ def shown(text, limit: int = 80, word: int | None = None) -> str:
 def shown_code(text, limit: int = 80) -> str:
     """`shown` text safe inside a Markdown code span, and as HTML should the page be converted: no
     backticks or tags (look-alikes instead), never empty (an empty code span is not one)."""
-    return shown(text, limit).translate(LOOK_ALIKES) or " "
+    return look_alike(shown(text, limit)) or " "
+
+
+def look_alike(text: str) -> str:
+    """`text` with LOOK_ALIKES for backticks and angle brackets (translated only when it has any)."""
+    return text.translate(LOOK_ALIKES) if "`" in text or "<" in text or ">" in text else text

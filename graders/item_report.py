@@ -36,16 +36,28 @@ def _md(text) -> str:
     return shown(str(text), 400).translate(_MD_SPECIAL)
 
 
-def _clean(value):
+def _clean(record):
     """Every text of a record as one line without control or bidi characters: results.json may come
-    from anywhere (an older exgen, an edit by hand) and quotes what students typed and named their files."""
-    if isinstance(value, str):
-        return shown(value, 2000)
-    if isinstance(value, list):
-        return [_clean(v) for v in value]
-    if isinstance(value, dict):
-        return {k: _clean(v) for k, v in value.items()}
-    return value
+    from anywhere (an older exgen, an edit by hand) and quotes what students typed and named their files.
+    Each distinct text is cleaned once (statuses, part names and mistakes recur in every sheet)."""
+    done: dict[str, str] = {}
+
+    def clean(value):
+        if isinstance(value, str):
+            text = done.get(value)
+            if text is None:
+                text = done[value] = shown(value, 2000)
+            return text
+        if isinstance(value, list):
+            return [v if isinstance(v, _LEAVES) else clean(v) for v in value]
+        if isinstance(value, dict):
+            return {k: v if isinstance(v, _LEAVES) else clean(v) for k, v in value.items()}
+        return value
+
+    return clean(record)
+
+
+_LEAVES = (int, float, type(None))  # left as they are, without a call for each (a class's marks)
 
 
 def report_pages(record: dict) -> dict[str, str]:

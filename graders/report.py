@@ -13,7 +13,7 @@ from pathlib import Path
 from exgen.outdir import check_target, replacing
 from exgen.render.unicode_math import text_to_plain
 
-from .echo import LOOK_ALIKES, shown, shown_code
+from .echo import look_alike, shown, shown_code
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
                       SheetResult)
 
@@ -96,8 +96,13 @@ def _num(value: float) -> str:
 # ---- feedback -----------------------------------------------------------------------------------
 
 def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
+    return student_page(batch.assignment.title, sheet)
+
+
+def student_page(title: str, sheet: SheetResult) -> str:
+    """One student's feedback page, for an assignment of this title."""
     who = sheet.student.id + (f" ({_escape(sheet.student.name)})" if sheet.student.name else "")
-    lines = [f"# Feedback: {_escape(batch.assignment.title)}", "",
+    lines = [f"# Feedback: {_escape(title)}", "",
              f"Student: {who}" + (f" · Sheet code: {sheet.code}" if sheet.code else ""),
              f"Total: **{_num(sheet.points)} / {_num(sheet.max_points)}** ({sheet.percent:.1f} %)"
              + ("" if sheet.status == GRADED else f" · {sheet.status}"), ""]
@@ -138,8 +143,8 @@ def _escape(text: str, limit: int = MESSAGE_LENGTH) -> str:
     """Any text on a page (messages quote what students typed): its math in plain Unicode, one line,
     capped, and harmless as Markdown and as HTML without writing entities a reader of the file would
     see (the page shows ‹stream end›, not &lt;stream end&gt;)."""
-    text = shown(text_to_plain(str(text)), limit, word=QUOTED_WORD).translate(LOOK_ALIKES)
-    return _ENTITY.sub("\uff06", text)
+    text = look_alike(shown(text_to_plain(str(text)), limit, word=QUOTED_WORD))
+    return _ENTITY.sub("\uff06", text) if "&" in text else text
 
 
 def _sentence(message: str) -> str:

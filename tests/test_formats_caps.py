@@ -112,3 +112,25 @@ def test_echoed_text_is_one_short_line_without_hidden_characters(text, expected)
 
 def test_echoing_a_megabyte_costs_what_a_line_does():
     assert len(shown("\u202e" * 1_000_000 + "x" * 1_000_000, 60)) <= 60
+
+
+def test_printable_text_holds_nothing_that_echoing_would_change():
+    """`shown` returns printable text that is already one clean line as it is: it may, because no
+    printable character is one it drops or a blank other than the space (the whole of Unicode checked)."""
+    import unicodedata
+
+    from graders.echo import _DROPPED
+
+    changed = [hex(c) for c in range(0x110000) if chr(c).isprintable() and chr(c) != " "
+               and (chr(c).isspace() or unicodedata.category(chr(c)) in _DROPPED)]
+    assert changed == []
+
+
+@pytest.mark.parametrize("text, word, expected", [
+    ("θ = 168.7°", None, "θ = 168.7°"),
+    ("not within 1 % of the expected value, whatever its size", 48, "not within 1 % of the expected value, whatever its size"),
+    ("cannot read '" + "9" * 60 + "' as a number", 48, "cannot read '" + "9" * 47 + "\u2026 as a number"),
+    ("ω  = 3\u202e1", None, "ω = 3 1"),
+])
+def test_a_long_message_is_kept_whole_unless_one_word_is_too_long(text, word, expected):
+    assert shown(text, 400, word=word) == expected

@@ -325,5 +325,7 @@ def unescape_dollars(prose: str) -> str:
 
 def text_to_plain(text: str) -> str:
     """A statement or ask for the terminal: math spans as Unicode."""
+    if "$" not in text:  # no math and no escaped dollar: most messages and asks
+        return text
     return "".join(latex_to_unicode(chunk) if is_math else unescape_dollars(chunk)
                    for is_math, chunk in split_math(text))
