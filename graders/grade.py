@@ -11,7 +11,7 @@ import contextlib
 import dataclasses
 import inspect
 from pathlib import Path
-from typing import Callable, Iterable, Mapping
+from typing import Callable, Iterable, Iterator, Mapping
 
 from exgen import parallel
 from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet, load_roster
@@ -24,6 +24,7 @@ from .answers import Submission
 from .echo import shown
 from .collect import Entry, collect, read_one
 from .marking import QuestionMarker
+from .report import student_page
 from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, PROBLEM_FILE, UNREADABLE_FILE, BatchResult, Column,
                       FileProblem, QuestionResult, SheetResult)
 
@@ -118,17 +119,27 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
 
         entries, problems = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes,
                                     read_all=read_all)
+        pages: dict[str, tuple[SheetResult, str]] = {}
         if workers:
-            graded = workers[0].map(_grade_in_worker, entries, chunksize=16)
+            graded = _keeping_pages(workers[0].map(_grade_in_worker, entries, chunksize=16), pages)
         else:
             graded = (_grade_entry(entry, *shared[:-1], shared[-1].get(entry.student.id)) for entry in entries)
         sheets = _gather(_with_progress(progress, graded, len(entries)), entries, problems, submissions_dir)
-    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir))
+    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages)
 
 
-def _grade_in_worker(entry: Entry) -> SheetResult:
+def _grade_in_worker(entry: Entry) -> tuple[SheetResult, str]:
+    """The sheet graded, and its feedback page written here too: the pages are written in parallel, not
+    one after another by the process that writes the results."""
     assignment, bank, secret, max_points, codes = parallel.shared()
-    return _grade_entry(entry, assignment, bank, secret, max_points, codes.get(entry.student.id))
+    result = _grade_entry(entry, assignment, bank, secret, max_points, codes.get(entry.student.id))
+    return result, student_page(assignment.title, result)
+
+
+def _keeping_pages(graded: Iterable[tuple[SheetResult, str]], pages: dict) -> Iterator[SheetResult]:
+    for result, page in graded:
+        pages[result.student.id] = (result, page)
+        yield result
 
 
 def _gather(graded: Iterable[SheetResult], entries: list[Entry], problems: list[FileProblem],

@@ -43,7 +43,7 @@ def write_results(batch: BatchResult, out_dir: Path, signs=(), canvas_id: str = 
 
     out_dir = Path(out_dir)
     check_target(out_dir, KIND)
-    feedback = {s.student.id: feedback_page(batch, s) for s in batch.sheets}
+    feedback = {s.student.id: _page(batch, s) for s in batch.sheets}
     report = report_page(batch)
     record = batch_record(batch, signs)
     pages = report_pages(record)
@@ -94,6 +94,12 @@ def _num(value: float) -> str:
 
 
 # ---- feedback -----------------------------------------------------------------------------------
+
+def _page(batch: BatchResult, sheet: SheetResult) -> str:
+    """The sheet's feedback page: as written where it was graded, if that was this very sheet."""
+    made = batch.pages.get(sheet.student.id)
+    return made[1] if made is not None and made[0] is sheet else feedback_page(batch, sheet)
+
 
 def feedback_page(batch: BatchResult, sheet: SheetResult) -> str:
     return student_page(batch.assignment.title, sheet)

@@ -2,8 +2,9 @@
 from __future__ import annotations
 
 import statistics
-from typing import Any
+from typing import Any, Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 from exgen.assignment import Assignment, Student
@@ -53,8 +54,8 @@ class QuestionResult:
     parts: tuple[PartResult, ...]
     max_points: float
 
-    @property
-    def points(self) -> float:
+    @cached_property
+    def points(self) -> float:  # read for every gradebook, page and report: summed once
         return sum(p.points for p in self.parts)
 
 
@@ -69,7 +70,7 @@ class SheetResult:
     path: Path | None = None
     code_mismatch: bool = False  # the answer file's sheet code is not this sheet's
 
-    @property
+    @cached_property
     def points(self) -> float:
         return sum(q.points for q in self.questions)
 
@@ -108,6 +109,9 @@ class BatchResult:
     problems: tuple[FileProblem, ...] = field(default=())
     submissions: Path | None = None  # the directory the answer files came from
     warnings: tuple[str, ...] = ()   # about the whole batch (graded with --force although ...)
+    #: Feedback pages written where the sheets were graded, in parallel: student id -> (the sheet, its page).
+    #: graders.report writes the page of a sheet not here, or replaced since, itself.
+    pages: Mapping[str, tuple[SheetResult, str]] = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def max_points(self) -> float:

@@ -191,3 +191,31 @@ def test_a_large_class_graded_in_worker_processes_gets_the_same_results(bank, ha
     shared = grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER, jobs=2)
     assert shared == alone
     assert [s.status for s in shared.sheets].count(GRADED) >= 3
+
+
+def test_a_class_graded_in_worker_processes_writes_the_same_files(bank, handed_in, monkeypatch, tmp_path):
+    """The workers write each feedback page where the sheet was graded; every file written (pages,
+    gradebooks, report, results.json) is byte for byte what one process writes."""
+    import graders.grade
+
+    write_results(grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER), tmp_path / "alone")
+    monkeypatch.setattr(graders.grade, "PARALLEL_FROM", 2)
+    shared = grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER, jobs=2)
+    assert set(shared.pages) == {s.student.id for s in shared.sheets}
+    write_results(shared, tmp_path / "shared")
+    alone = {p.relative_to(tmp_path / "alone"): p.read_bytes() for p in (tmp_path / "alone").rglob("*") if p.is_file()}
+    both = {p.relative_to(tmp_path / "shared"): p.read_bytes() for p in (tmp_path / "shared").rglob("*") if p.is_file()}
+    assert both == alone and len(alone) > len(ROSTER)
+
+
+def test_a_sheet_replaced_after_grading_gets_a_page_of_its_own(bank, handed_in, tmp_path):
+    """A page written where a sheet was graded is used only for that very sheet."""
+    import dataclasses
+
+    batch = grade_batch(ASSIGNMENT, bank, SECRET, handed_in, roster=ROSTER)
+    first = batch.sheets[0]
+    renamed = dataclasses.replace(first, student=dataclasses.replace(first.student, name="Another Name"))
+    batch = dataclasses.replace(batch, sheets=(renamed, *batch.sheets[1:]),
+                                pages={first.student.id: (first, "a page of the sheet as first graded\n")})
+    page = (write_results(batch, tmp_path / "out")["feedback"] / f"{first.student.id}.md").read_text(encoding="utf-8")
+    assert "Another Name" in page and "as first graded" not in page
