@@ -44,3 +44,9 @@ def median_ms(fn, items, warm: bool = True) -> tuple[float, float]:
 def load() -> str:
     one, five, _ = os.getloadavg()
     return f"load average {one:.2f} (5 min: {five:.2f}) on {os.cpu_count()} cores"
+
+
+def allocator() -> str:
+    """Which malloc this process typesets with: Typst's time depends on it (exgen/allocator.py)."""
+    preloaded = os.environ.get("LD_PRELOAD", "")
+    return "jemalloc preloaded" if "jemalloc" in preloaded else "the system's malloc"

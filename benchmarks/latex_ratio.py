@@ -22,7 +22,7 @@ import unicodedata
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from clock import load  # noqa: E402
+from clock import allocator, load  # noqa: E402
 
 HERE = Path(__file__).parent
 _SPECIAL = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_",
@@ -171,7 +171,7 @@ def main() -> None:
                 make(sheet, figures)
                 rows[kind][0].append(time.perf_counter() - start)
                 rows[kind][1].append(pdflatex_twice(latex_document(sheet, figures, pdfs, kind == "key"), Path(folder)))
-    print(f"{assignment.title}: medians of {n} students, wall time; {load()}")
+    print(f"{assignment.title}: medians of {n} students, wall time, Typst in this process ({allocator()}); {load()}")
     for kind, (typst_times, latex_times) in rows.items():
         t, tex = statistics.median(typst_times), statistics.median(latex_times)
         print(f"one {kind}: Typst in-process {t * 1e3:6.1f} ms, pdflatex twice {tex * 1e3:7.1f} ms: "

@@ -11,7 +11,7 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent))
-from clock import load, median_ms  # noqa: E402
+from clock import allocator, load, median_ms  # noqa: E402
 
 from exgen.assignment import Student, build_sheet, load_assignment  # noqa: E402
 from exgen.bank import load_bank  # noqa: E402
@@ -36,7 +36,8 @@ def main() -> None:
     def render(fn):
         return (lambda item: fn(item[0], item[1])) if drawn[0][1] is not None else (lambda item: fn(item[0]))
 
-    print(f"{assignment.title}: {len(assignment.questions)} problems, medians of {n} students; {load()}")
+    print(f"{assignment.title}: {len(assignment.questions)} problems, medians of {n} students, in this process "
+          f"({allocator()}; run with LD_PRELOAD=libjemalloc.so.2 for what exgen's PDF workers use); {load()}")
     for name in ("key", "sheet"):
         whole = median_ms(render(getattr(pdf, f"{name}_pdf")), drawn)
         sources = [render(getattr(pdf, f"{name}_typst"))(item) for item in drawn]
