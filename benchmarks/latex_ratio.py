@@ -160,10 +160,13 @@ def main() -> None:
     assignment = load_assignment(Path(sys.argv[2]) if len(sys.argv) > 2 else HERE / "class_all.yaml", load_bank())
     bank = load_bank()
     rows = {"sheet": ([], []), "key": ([], [])}
+    secret = b"benchmark secret, not a real one"
+    warm = build_sheet(assignment, Student("W00000", "Warm-up"), bank, secret)
+    sheet_pdf(warm, draw_figures(warm))  # fonts and first-use costs, on a sheet not timed: Typst keeps what it
+    # laid out, so a document typeset a second time in one process costs almost nothing
     for i in range(n):
-        sheet = build_sheet(assignment, Student(f"S{i:05d}", f"Student {i}"), bank, b"benchmark secret, not a real one")
+        sheet = build_sheet(assignment, Student(f"S{i:05d}", f"Student {i}"), bank, secret)
         figures = draw_figures(sheet)
-        sheet_pdf(sheet, figures)  # warm: fonts, caches
         with tempfile.TemporaryDirectory() as folder:
             pdfs = figure_pdfs(figures, Path(folder))
             for kind, make in (("sheet", sheet_pdf), ("key", key_pdf)):
