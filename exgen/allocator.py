@@ -3,9 +3,9 @@
 Typst is linked against the C library's malloc. Under glibc's, a key spends about a tenth of its time
 allocating and freeing, and a process that has typeset a hundred documents typesets a fifth slower than a
 fresh one (its heap fragments). With jemalloc the same worker typesets a key about 12 % faster and keeps
-its pace: a class set of 500 takes about a sixth less time (benchmarks/README.md). A running process keeps its allocator, but exgen starts its PDF workers
-itself: where jemalloc is installed (Debian and Ubuntu: the libjemalloc2 package) they start with it
-preloaded. The PDFs are the same bytes either way.
+its pace: a class set of 500 takes about a sixth less time (benchmarks/README.md). A running process
+keeps its allocator, but exgen starts its PDF workers itself: where jemalloc is installed (Debian and
+Ubuntu: the libjemalloc2 package) they start with it preloaded. The PDFs are the same bytes either way.
 
     EXGEN_ALLOCATOR=system          keep the system's allocator
     EXGEN_ALLOCATOR=/path/to/lib.so preload that library instead

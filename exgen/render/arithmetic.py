@@ -21,8 +21,8 @@ _SKIP = {SPACE, Tok("cmd", ","), Tok("cmd", ";"), Tok("cmd", ":"), Tok("cmd", "!
          Tok("cmd", " ")}
 _TIMES = {Tok("cmd", "times"), Tok("cmd", "cdot")}
 # tokens compared against at every step, made once (a frozen dataclass is slow to make)
-_PLUS, _MINUS, _SLASH, _PI, _E = Tok("char", "+"), Tok("char", "-"), Tok("char", "/"), Tok("cmd", "pi"), Tok("char", "e")
-_SIGNS = (_PLUS, _MINUS)
+_SIGNS = (Tok("char", "+"), Tok("char", "-"))
+_SLASH, _PI, _E = Tok("char", "/"), Tok("cmd", "pi"), Tok("char", "e")
 _DEGREE = [Tok("cmd", "circ")]
 _CONSTANTS = (_PI, _E)
 
