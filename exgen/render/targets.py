@@ -10,7 +10,7 @@ import re
 from functools import lru_cache
 
 from .. import units
-from .formula import terms, write
+from .formula import terms, written
 from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_typst
 from .unicode_math import latex_to_unicode, text_to_plain
 
@@ -201,12 +201,9 @@ _MARKER = re.compile(r'"#(\d+)#"')
 _LATEX_MARKER = re.compile(r"\\text\{#(\d+)#\}")
 
 
-@lru_cache(maxsize=8192)
 def _marked(latex: str, symbols: tuple, numbers: bool) -> str:
     """The formula's LaTeX with each number's place held by a marker, \\text{#3#}: one per template."""
-    from .formula import parse
-
-    return write(parse(latex), lambda slot: symbols[slot.index] or rf"\text{{#{slot.index}#}}", numbers)
+    return written(latex, tuple(symbol or rf"\text{{#{i}#}}" for i, symbol in enumerate(symbols)), numbers)
 
 
 @lru_cache(maxsize=8192)
