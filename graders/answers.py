@@ -3,7 +3,7 @@
 The form itself is written by exgen.render.answer_form. Students may return it as YAML, or JSON
 with the same keys, or CSV with one answer per row (`slot,part,answer`, e.g. `q1,a,168.8 deg`) and
 optional rows `student,<id>`, `assignment,<id>` and `code,<code>`; a title row `slot,part,answer` is
-skipped. Whatever the format, an answer is kept as the text typed; a part whose answer is not a
+skipped. Or they hand back the sheet PDF itself, its form typed into (graders.pdf_form). Whatever the format, an answer is kept as the text typed; a part whose answer is not a
 single value is "unreadable", not the file.
 """
 from __future__ import annotations
@@ -15,7 +15,7 @@ from pathlib import Path
 from exgen.errors import SubmissionError
 
 from .echo import shown
-from .formats import LOADERS, READ_SECONDS, SUFFIXES, Loaded, file_kind, read_text
+from .formats import BINARY, LOADERS, READ_SECONDS, SUFFIXES, Loaded, file_kind, read_text
 
 HEADER_KEYS = ("assignment", "student", "code")
 MAX_HEADER_LENGTH = 200
@@ -36,14 +36,14 @@ class Submission:
 
 
 def read_submission(path: Path, seconds: float = READ_SECONDS) -> Submission:
-    """Read an answer file (.yaml/.yml, .json or .csv) in at most about `seconds`; SubmissionError if it
-    cannot be read at all."""
+    """Read an answer file (.yaml/.yml, .json, .csv, or a sheet PDF with its form filled in) in at most about
+    `seconds`; SubmissionError if it cannot be read at all."""
     path = Path(path)
     kind = file_kind(path)
     if kind is None:
         raise SubmissionError(path, f"not an answer file: expected {', '.join(sorted(SUFFIXES))}")
     deadline = time.perf_counter() + seconds
-    loaded = LOADERS[kind](path, read_text(path), deadline)
+    loaded = LOADERS[kind](path, None if kind in BINARY else read_text(path), deadline)
     return _submission(path, loaded)
 
 

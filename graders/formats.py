@@ -30,7 +30,9 @@ MAX_ENTRIES = 2000
 READ_SECONDS = 2.0
 #: Notes kept about one file (duplicate keys, ignored rows); the rest are counted.
 MAX_WARNINGS = 10
-SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".json": "json", ".csv": "csv"}
+SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".json": "json", ".csv": "csv", ".pdf": "pdf"}
+#: Kinds read from their bytes by their loader, not as text first.
+BINARY = {"pdf"}
 #: Tags a YAML answer file may carry written out (!!str); anything else is refused, never built.
 _CORE = "tag:yaml.org,2002:"
 CSV_HEADER_KEYS = ("student", "assignment", "code")
@@ -337,4 +339,11 @@ def load_csv(path: Path, text: str, deadline: float | None = None) -> Loaded:
     return loaded
 
 
-LOADERS = {"yaml": load_yaml, "json": load_json, "csv": load_csv}
+def load_pdf(path: Path, text: str | None = None, deadline: float | None = None) -> Loaded:
+    """A sheet PDF's typed answers (graders.pdf_form, imported only when a PDF is read)."""
+    from .pdf_form import load_pdf as load
+
+    return load(path, text, deadline)
+
+
+LOADERS = {"yaml": load_yaml, "json": load_json, "csv": load_csv, "pdf": load_pdf}

@@ -252,7 +252,7 @@ def test_every_file_is_graded_or_listed_with_why(issued, tmp_path, bank):
     assert batch.sheets[0].status == GRADED and batch.sheets[0].percent == 100.0  # the .yaml.txt
     reasons = {p.path.name: p.reason for p in batch.problems}
     assert set(reasons) == {"answers.pdf", "gradebook.csv", ".DS_Store", "README"}
-    assert "not an answer file (.pdf)" in reasons["answers.pdf"] and "gradebook" in reasons["gradebook.csv"]
+    assert "not a readable PDF" in reasons["answers.pdf"] and "gradebook" in reasons["gradebook.csv"]
     assert "hidden" in reasons[".DS_Store"] and "no extension" in reasons["README"]
 
 

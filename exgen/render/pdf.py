@@ -18,6 +18,10 @@ from .jinja import render
 from .targets import TYPST
 
 
+#: On the sheet's last page, above the footer rule: never a page of its own.
+CLOSING = "Type your answers into the boxes of this PDF and save it, or write them on a printed copy or in the answer file."
+
+
 class PdfError(ExgenError, RuntimeError):
     """Typst could not compile a sheet; names the sheet and Typst's message."""
 
@@ -26,7 +30,7 @@ class PdfError(ExgenError, RuntimeError):
         super().__init__(f"cannot typeset {what}: {message}")
 
 
-def _context(sheet, key: bool, figures=None) -> dict:
+def _context(sheet, key: bool, figures=None, form: bool = False) -> dict:
     """Figures are embedded as SVG text; `figures` is the sheet's `draw_figures` (drawn here when not given)."""
     figures = draw_figures(sheet) if figures is None else figures
     svgs = {slot: f.sheet.svg for slot, f in figures.items() if f.sheet}
@@ -41,14 +45,14 @@ def _context(sheet, key: bool, figures=None) -> dict:
     if key:
         pieces.insert(0, "*Instructor key*")
     context["footer_left"] = " · ".join(p for p in pieces if p)
-    # on the sheet's last page, above the footer rule: never a page of its own
-    context["closing"] = "" if key else "Write your answers in the answer file that came with this sheet."
+    context["closing"] = "" if key else CLOSING
+    context["form"] = form
     return context
 
 
-def sheet_typst(sheet, figures=None) -> str:
-    """The Typst source of the student's sheet."""
-    return render("sheet.typ.j2", _context(sheet, False, figures))
+def sheet_typst(sheet, figures=None, form: bool = True) -> str:
+    """The Typst source of the student's sheet; with `form`, its answer lines report where they land."""
+    return render("sheet.typ.j2", _context(sheet, False, figures, form))
 
 
 def key_typst(sheet, figures=None) -> str:
@@ -75,8 +79,18 @@ def compile_pdf(source: str, what: str = "a document") -> bytes:
         raise PdfError(what, str(exc).strip().splitlines()[0] if str(exc).strip() else repr(exc)) from exc
 
 
-def sheet_pdf(sheet, figures=None) -> bytes:
-    return compile_pdf(sheet_typst(sheet, figures), f"the sheet of {sheet.student.id}")
+def sheet_pdf(sheet, figures=None, form: bool = True) -> bytes:
+    """The student's sheet; with `form`, a form to type the answers into, on the sheet's answer lines."""
+    what = f"the sheet of {sheet.student.id}"
+    typeset = compile_pdf(sheet_typst(sheet, figures, form), what)
+    if not form:
+        return typeset
+    from .pdf_form import FormError, add_form
+
+    try:
+        return add_form(typeset, sheet)
+    except FormError as exc:
+        raise PdfError(what, str(exc)) from exc
 
 
 def key_pdf(sheet, figures=None) -> bytes:
