@@ -164,7 +164,8 @@ def _fields(path: Path, top: list, loaded: Loaded) -> None:
         value = field.get("/V", value)
         kids = field.get("/Kids")
         kids = kids.get_object() if kids is not None else None
-        named_kids = [k for k in kids if _has_name(k)] if isinstance(kids, list) else []
+        named_kids = [k for k in kids if _has_name(k) and not (isinstance(k, IndirectObject) and k.idnum in seen)] \
+            if isinstance(kids, list) else []  # a kid already read (a cycle) is not read again
         if named_kids:
             stack += [(k, names, kind, value) for k in reversed(named_kids)]
         elif names:

@@ -116,19 +116,25 @@ def student_page(title: str, sheet: SheetResult) -> str:
         lines += [f"> **Note:** {_escape(warning)}", ""]
     if len(sheet.warnings) > NOTES_SHOWN:
         lines += [f"> **Note:** ... and {len(sheet.warnings) - NOTES_SHOWN} more notes like these.", ""]
+    from_pdf = sheet.path is not None and sheet.path.suffix.lower() == ".pdf"  # quote each box as it was read
     for question in sheet.questions:
         lines += [f"## Q{question.number}. {_escape(question.title)} ({_num(question.points)} / "
                   f"{_num(question.max_points)})", ""]
         for part in question.parts:
-            lines += _part_block(part)
+            lines += _part_block(part, f"{question.slot}.{part.part_id}" if from_pdf else "")
     return "\n".join(lines).rstrip() + "\n"
 
 
-def _part_block(part: PartResult) -> list[str]:
-    given = f"`{_shown(part.given)}`" if part.given.strip() else "(blank)"
+def _part_block(part: PartResult, box: str = "") -> list[str]:
+    """A part's mark, what was given (`box`: the PDF field it was read from) and what was expected."""
+    if box:
+        given = (f"Read from your PDF's box {_shown(box, 40)}: `{_shown(part.given)}`" if part.given.strip()
+                 else f"Your PDF's box {_shown(box, 40)} was empty")
+    else:
+        given = "Your answer: " + (f"`{_shown(part.given)}`" if part.given.strip() else "(blank)")
     return [
         f"**({part.part_id}) {MARK[part.correct]} {_num(part.points)} / {_num(part.max_points)}**: {_escape(part.ask, 2000)}  ",
-        f"Your answer: {given} · expected: {part.expected}  ",
+        f"{given} · expected: {part.expected}  ",
         _escape(_sentence(part.message)), "",
     ]
 

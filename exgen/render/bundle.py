@@ -2,7 +2,8 @@
 
 The students' PDFs are joined as they are (pypdf), so a bundle's pages are the very pages each student
 was given. For printing on both sides, a sheet with an odd number of pages is followed by a blank page,
-so every student's sheet starts on a new leaf and no two students share one.
+so every student's sheet starts on a new leaf and no two students share one. A bundle is for printing:
+the sheets' answer forms (every student's named alike, empty, printing nothing) are left out.
 """
 from __future__ import annotations
 
@@ -23,6 +24,8 @@ def join_pdfs(paths: list[Path], out: Path, duplex: bool = True) -> int:
         if duplex and len(reader.pages) % 2:
             box = reader.pages[-1].mediabox
             writer.add_blank_page(width=float(box.width), height=float(box.height))
+    writer.remove_annotations(subtypes="/Widget")
+    writer.root_object.pop("/AcroForm", None)
     with out.open("wb") as handle:
         writer.write(handle)
     return len(writer.pages)

@@ -18,6 +18,8 @@ _SVG_BOX = re.compile(r'viewBox="[-\d.]+ [-\d.]+ ([\d.]+) ([\d.]+)"')
 _SVG_WIDTH = re.compile(r'<svg\b[^>]*?\swidth="([\d.]+)pt"')
 #: A4 less the margins, in mm: the text block a question must fit, and its width.
 PAGE_HEIGHT, PAGE_WIDTH = 297 - 20 - 24, 210 - 44
+#: The height a sheet's answer line adds to a part (a 16 pt line and the line break above it), in mm.
+ANSWER_LINE = 7.5
 
 
 def marks(value: float) -> str:
@@ -29,11 +31,11 @@ def plural(value: float, word: str = "mark") -> str:
     return f"{marks(value)} {word}{'' if value == 1 else 's'}"
 
 
-def surely_fits(statement: str, svg: str | None, asks: list[str]) -> bool:
-    """Whether a question's heading, statement, figure and parts surely fit on one page: a generous
-    estimate, so that the layout measures only the questions that might not."""
+def surely_fits(statement: str, svg: str | None, asks: list[str], answer_lines: bool = False) -> bool:
+    """Whether a question's heading, statement, figure and parts (with a sheet's answer lines) surely fit
+    on one page: a generous estimate, so that the layout measures only the questions that might not."""
     lines = sum(len(p) // 90 + 1 for p in statement.split("\n\n")) + sum(len(a) // 70 + 1 for a in asks)
-    height = 14 + 5.2 * lines + 2.5 * len(asks)  # heading, lines of text, gaps between parts
+    height = 14 + 5.2 * lines + (2.5 + (ANSWER_LINE if answer_lines else 0)) * len(asks)  # heading, text, parts
     box = _SVG_BOX.search(svg or "")
     if box:
         height += 0.88 * PAGE_WIDTH * float(box.group(2)) / float(box.group(1)) + 12  # figure and caption
@@ -94,7 +96,8 @@ def question_context(question, target, figure: str | None, svg: str | None, key:
         "figure": figure,
         "caption": target.prose(figure_caption(question.number, svg)),
         "parts": parts,
-        "fits": surely_fits(PLAIN.text(v.statement), svg if figure else None, [PLAIN.text(v.asks[p.id]) for p in v.template.parts]),
+        "fits": surely_fits(PLAIN.text(v.statement), svg if figure else None, [PLAIN.text(v.asks[p.id]) for p in v.template.parts],
+                            answer_lines=not key),
     }
     if key:
         context.update(key_context(v, target, key_figures))
