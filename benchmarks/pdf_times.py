@@ -3,12 +3,16 @@
     python benchmarks/pdf_times.py [STUDENTS] [ASSIGNMENT]
 
 Medians over STUDENTS (default 20) sheets of ASSIGNMENT (default benchmarks/class_all.yaml): the whole
-of key_pdf()/sheet_pdf() given the drawn sheet and its figures, and Typst's compile alone.
+of key_pdf()/sheet_pdf() given the drawn sheet and its figures, and Typst's compile alone; and the sheet
+without its answer form beside it (the form may add at most a tenth), each over other students' sheets.
 """
 from __future__ import annotations
 
+import inspect
 import sys
+import time
 from pathlib import Path
+from statistics import median
 
 sys.path.insert(0, str(Path(__file__).parent))
 from clock import allocator, load, median_ms  # noqa: E402
@@ -28,7 +32,7 @@ def main() -> None:
     # twice as many sheets as timed: "compile alone" typesets other students' sources than the whole runs did
     # (Typst keeps what it laid out: a document typeset a second time in one process costs almost nothing)
     sheets = [build_sheet(assignment, Student(f"S{i:05d}", f"Student {i}"), bank, b"benchmark secret, not a real one")
-              for i in range(2 * n)]
+              for i in range(4 * n)]
     try:
         from exgen.figures import draw_figures
         drawn = [(s, draw_figures(s)) for s in sheets]
@@ -46,7 +50,20 @@ def main() -> None:
         compile_only = median_ms(pdf.compile_pdf, sources)
         print(f"one {name} PDF: {whole[0]:6.1f} ms wall, {whole[1]:6.1f} ms CPU "
               f"(Typst compile alone {compile_only[0]:6.1f} ms wall, {compile_only[1]:6.1f} ms CPU)")
-
+    if "form" in inspect.signature(pdf.sheet_pdf).parameters:
+        # one sheet without its form, the next with it, and so on: both halves met the same load on the host
+        walls, cpus = {False: [], True: []}, {False: [], True: []}
+        pdf.sheet_pdf(*drawn[2 * n])  # warm
+        for i, (sheet, figures) in enumerate(drawn[2 * n + 1:]):  # sheets not typeset before
+            form = bool(i % 2)
+            wall, cpu = time.perf_counter(), time.process_time()
+            pdf.sheet_pdf(sheet, figures, form=form)
+            cpus[form].append((time.process_time() - cpu) * 1e3)
+            walls[form].append((time.perf_counter() - wall) * 1e3)
+        plain, with_form = ((median(walls[f]), median(cpus[f])) for f in (False, True))
+        print(f"one sheet PDF without its form: {plain[0]:6.1f} ms wall, {plain[1]:6.1f} ms CPU; with it "
+              f"{with_form[0]:6.1f} ms wall, {with_form[1]:6.1f} ms CPU (alternate sheets, {len(cpus[True])} "
+              f"each): the form adds {100 * (with_form[1] / plain[1] - 1):+.1f} % CPU")
 
 if __name__ == "__main__":
     main()

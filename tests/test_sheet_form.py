@@ -40,7 +40,7 @@ def issued(request, bank):
     """(sheet, the sheet PDF, the sheet PDF without the form, each part's region as the layout reports it)."""
     sheet = build_sheet(every_template(), request.param, bank, SECRET)
     figures = draw_figures(sheet)
-    source = sheet_typst(sheet, figures)
+    source = sheet_typst(sheet, figures, regions=True)  # the same layout: the region marks take no room
     regions: dict[tuple[int, int], dict] = {}
     for mark in json.loads(typst.query((source + PROBE).encode(), "<probe>", field="value", one=True)):
         regions.setdefault((mark["question"], mark["part"]), {})[mark["what"]] = mark

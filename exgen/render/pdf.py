@@ -30,7 +30,7 @@ class PdfError(ExgenError, RuntimeError):
         super().__init__(f"cannot typeset {what}: {message}")
 
 
-def _context(sheet, key: bool, figures=None, form: bool = False) -> dict:
+def _context(sheet, key: bool, figures=None, form: bool = False, regions: bool = False) -> dict:
     """Figures are embedded as SVG text; `figures` is the sheet's `draw_figures` (drawn here when not given)."""
     figures = draw_figures(sheet) if figures is None else figures
     svgs = {slot: f.sheet.svg for slot, f in figures.items() if f.sheet}
@@ -46,13 +46,14 @@ def _context(sheet, key: bool, figures=None, form: bool = False) -> dict:
         pieces.insert(0, "*Instructor key*")
     context["footer_left"] = " · ".join(p for p in pieces if p)
     context["closing"] = "" if key else CLOSING
-    context["form"] = form
+    context["form"], context["form_regions"] = form, regions
     return context
 
 
-def sheet_typst(sheet, figures=None, form: bool = True) -> str:
-    """The Typst source of the student's sheet; with `form`, its answer lines report where they land."""
-    return render("sheet.typ.j2", _context(sheet, False, figures, form))
+def sheet_typst(sheet, figures=None, form: bool = True, regions: bool = False) -> str:
+    """The Typst source of the student's sheet; with `form`, its answer lines report where they land (and
+    with `regions`, where each part's region is: what the tests check the form's fields against)."""
+    return render("sheet.typ.j2", _context(sheet, False, figures, form, regions))
 
 
 def key_typst(sheet, figures=None) -> str:

@@ -67,7 +67,8 @@ def add_form(typeset: bytes, sheet) -> bytes:
             size = (round(w, 2), round(h, 2))
             if size not in empty:
                 empty[size] = update.add(_appearance(*size, font))
-            rect = [round(v, 2) for v in (x, top - y - h, x + w, top - y)]
+            x += float(place["dx"])  # the mark is where the line with "Answer:" starts, on its baseline
+            rect = [round(v, 2) for v in (x, top - y, x + w, top - y + h)]
             ref = update.add(_widget(question, part, rect, parent, pages[page_index].indirect_reference.idnum,
                                      empty[size]))
             kids.append(ref)
@@ -99,7 +100,8 @@ def add_form(typeset: bytes, sheet) -> bytes:
 
 
 def _places(reader: PdfReader) -> dict[tuple[int, int], dict]:
-    """(question number, part index) -> the answer line's page, x, y (from the page's top) and size, in pt."""
+    """(question number, part index) -> the answer line's page, where its line starts on its baseline (x, and y
+    from the page's top), how far right of that it starts (dx), and its size, in pt."""
     found = reader.attachments.get(PLACES)
     if not found:
         raise FormError("the layout attached no answer lines' places")
