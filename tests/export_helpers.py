@@ -11,11 +11,17 @@ from functools import lru_cache
 from pathlib import Path
 
 from exgen.bank import load_bank
+from exgen.export.filters import number
 from exgen.export.pool import build_pool
 
 SCHEMAS = Path(__file__).parent / "schemas" / "qti21-catalog"
 SECRET = b"0123456789abcdef-export-tests-secret"
 VARIANTS = 2
+
+
+def written(value: float) -> float:
+    """A value as an export writes it (exgen.export.filters.number), read back."""
+    return float(number(value))
 
 
 @lru_cache(maxsize=1)

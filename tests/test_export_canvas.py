@@ -9,7 +9,7 @@ from lxml import etree
 
 from exgen.export.canvas import canvas_files, groups
 
-from export_helpers import every_template_pool
+from export_helpers import every_template_pool, written
 
 Q = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
 CC = "{http://www.imsglobal.org/xsd/imsccv1p1/imscp_v1p1}"
@@ -80,9 +80,9 @@ def test_numerical_ranges_and_choices_round_trip():
                 conditions = [c for c in item.iter(f"{Q}respcondition") if c.find(f".//{Q}setvar") is not None]
                 assert len(conditions) == len(gap.values)
                 for condition, value in zip(conditions, gap.values):
-                    assert float(condition.findtext(f".//{Q}varequal")) == value
+                    assert float(condition.findtext(f".//{Q}varequal")) == written(value)
                     low, high = float(condition.findtext(f".//{Q}vargte")), float(condition.findtext(f".//{Q}varlte"))
-                    assert low == value - gap.tolerance and high == value + gap.tolerance
+                    assert low == written(value - gap.tolerance) and high == written(value + gap.tolerance)
                     assert condition.findtext(f".//{Q}setvar") == "100"
                 numeric += 1
             else:

@@ -13,7 +13,7 @@ from exgen.export.html import LATEX_HTML
 from exgen.export.moodle import PLUGINFILE, moodle_xml
 from exgen.export.pool import make_item
 
-from export_helpers import cloze_subquestions, every_template_pool
+from export_helpers import cloze_subquestions, every_template_pool, written
 
 #: The grades Moodle's import accepts as they are (question/engine/bank.php), in percent.
 MOODLE_FRACTIONS = {100, 90, 83.33333, 80, 75, 70, 66.66667, 60, 50, 40, 33.33333, 30, 25, 20, 16.66667, 14.28571,
@@ -99,10 +99,10 @@ def test_numerical_questions_round_trip_values_tolerances_units_and_mistakes():
         gap, part = item.gaps[0], item.exported_parts[0]
         answers = element.findall("answer")
         right = [a for a in answers if a.get("fraction") == "100"]
-        assert [float(a.findtext("text")) for a in right] == list(gap.values)
-        assert all(float(a.findtext("tolerance")) == gap.tolerance for a in right)
+        assert [float(a.findtext("text")) for a in right] == [written(v) for v in gap.values]
+        assert all(float(a.findtext("tolerance")) == written(gap.tolerance) for a in right)
         wrong = [a for a in answers if a.get("fraction") == "0" and a.findtext("text") != "*"]
-        assert [float(a.findtext("text")) for a in wrong] == [w.value for w in gap.wrong]
+        assert [float(a.findtext("text")) for a in wrong] == [written(w.value) for w in gap.wrong]
         assert [a.findtext("feedback/text") for a in wrong] == [str(w.message) for w in gap.wrong]
         assert answers[-1].findtext("text") == "*"
         assert all(float(a.get("fraction")) in MOODLE_FRACTIONS for a in answers)
@@ -132,10 +132,10 @@ def test_cloze_questions_split_into_one_subquestion_per_gap_with_every_value_and
             if gap.kind == "numeric":
                 assert sub.qtype == "numerical"
                 right = [a for a in sub.alternatives if a.fraction == 1]
-                assert [float(a.answer) for a in right] == list(gap.values)
-                assert all(a.tolerance == gap.tolerance for a in right)
+                assert [float(a.answer) for a in right] == [written(v) for v in gap.values]
+                assert all(a.tolerance == written(gap.tolerance) for a in right)
                 named = [a for a in sub.alternatives if a.fraction == 0 and a.answer != "*"]
-                assert [(float(a.answer), a.tolerance) for a in named] == [(w.value, w.tolerance) for w in gap.wrong]
+                assert [(float(a.answer), a.tolerance) for a in named] == [(written(w.value), written(w.tolerance)) for w in gap.wrong]
                 assert [a.feedback for a in named] == [str(w.message) for w in gap.wrong]
                 assert sub.alternatives[-1].answer == "*"
                 _in_tolerance_like_exgen(item, gap, part.id, gap.value, gap.tolerance)

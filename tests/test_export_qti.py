@@ -14,7 +14,7 @@ from exgen.render.unicode_math import latex_to_unicode, split_math
 from exgen.export.pool import make_item
 from exgen.export.qti import IMAGES, gap_refs, qti_files
 
-from export_helpers import every_template_pool, qti_schema
+from export_helpers import every_template_pool, qti_schema, written
 
 QTI = "{http://www.imsglobal.org/xsd/imsqti_v2p1}"
 CP = "{http://www.imsglobal.org/xsd/imscp_v1p1}"
@@ -94,12 +94,12 @@ def test_values_tolerances_points_and_feedback_round_trip():
             added = float(branches[0].find(f".//{QTI}sum/{QTI}baseValue").text)
             assert added == ref.points
             if ref.gap.kind == "numeric":
-                assert float(value) == ref.gap.value
+                assert float(value) == written(ref.gap.value)
                 right = branches[0].findall(f"{QTI}or/{QTI}equal")
-                assert [float(e.findtext(f"{QTI}baseValue")) for e in right] == list(ref.gap.values)
+                assert [float(e.findtext(f"{QTI}baseValue")) for e in right] == [written(v) for v in ref.gap.values]
                 assert {e.get("tolerance") for e in right} == {f"{_n(ref.gap.tolerance)} {_n(ref.gap.tolerance)}"}
                 named = [float(b.findtext(f"{QTI}equal/{QTI}baseValue")) for b in branches[1:]]
-                assert named == [w.value for w in ref.gap.wrong]
+                assert named == [written(w.value) for w in ref.gap.wrong]
             else:
                 assert value == ref.choice_ids[ref.gap.correct]
         feedback = {f.get("identifier"): f for f in document.findall(f"{QTI}modalFeedback")}
