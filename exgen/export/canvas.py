@@ -19,6 +19,11 @@ from .zips import write_zip
 IMAGES = "images/"
 #: How Canvas's importer finds a file of the package from HTML (the token is URL-encoded in attributes).
 FILEBASE = "%24IMS-CC-FILEBASE%24/"
+#: A choice's identifier, unique within its question. Canvas's QTI 1.2 converter rewrites the idents of
+#: choices (a '.' or ':' becomes '_', a trailing "_ans" or "_str" is cut) but not the values its response
+#: conditions compare them with, so an ident must be one it leaves as it is: letters, digits and '-', and
+#: no word canvas-lms reads as the question's own feedback ("correct", "wrong", "general_", "_all").
+CHOICE_ID = "C{number}"
 
 
 @dataclass(frozen=True)
@@ -61,7 +66,7 @@ def groups(pool: Pool) -> tuple[list[Group], dict[str, bytes]]:
                         by_gap[key] = Group(f"{items[0].ident.rsplit('-', 1)[0]}-{suffix}", title,
                                             float(part.points * gap.share), [])
                     ident = f"{item.ident}-{suffix}"
-                    choice_ids = {c: f"{ident}-C{i}" for i, c in enumerate(getattr(gap, "choices", ()), start=1)}
+                    choice_ids = {c: CHOICE_ID.format(number=i) for i, c in enumerate(getattr(gap, "choices", ()), start=1)}
                     answer_ids = list(choice_ids.values()) or [f"{ident}-A{i}" for i in range(1, len(gap.values) + 1)]
                     html = Markup(render("canvas_question.html.j2", item=item, part=part, gap=gap, src=FILEBASE + IMAGES))
                     by_gap[key].questions.append(CanvasQuestion(ident, f"{item.name} ({suffix})", html, item.solution,
