@@ -180,6 +180,11 @@ def report_page(batch: BatchResult) -> str:
               "| Question | Part | Correct | of which carried | Wrong | Blank | Unreadable | Most common mistakes |",
               "|---|---|---:|---:|---:|---:|---:|---|"]
     lines += _item_rows(batch)
+    left = [s for s in batch.sheets if s.status != GRADED]
+    if left:
+        lines += ["", "## Not in the Canvas and Moodle gradebooks", "",
+                  "Nothing of theirs was graded, so they have no row there, and importing keeps the grade they have:", ""]
+        lines += [f"- {_shown(s.student.id, 80)}: {s.status}" for s in left]
     warned = [s for s in batch.sheets if s.code_mismatch]
     if warned:
         lines += ["", "## Sheet code warnings", ""] + [f"- {s.student.id}" for s in warned]

@@ -56,15 +56,15 @@ def test_signs_never_change_a_mark(simulated):
     assert rows[copier]["status"] == "graded" and rows[copier]["total"] != ""
 
 
-def test_the_canvas_gradebook_has_canvas_headers_points_possible_and_blanks(simulated):
+def test_the_canvas_gradebook_has_canvas_headers_points_possible_and_the_graded_only(simulated):
     graded, plan, module = simulated
     rows = list(csv.reader((graded / "canvas_gradebook.csv").open(encoding="utf-8")))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Tutorial 1: Belt drives"]
     assert rows[1][0] == "Points Possible" and float(rows[1][5]) == 26
     by_id = {r[2]: r for r in rows[2:]}
-    assert len(by_id) == STUDENTS
+    assert len(by_id) == STUDENTS - 1
     taker, _ = plan["copies"]["another_students_sheet_code"]
-    assert by_id[taker][5] == ""  # a refused file: blank, never 0
+    assert taker not in by_id  # a refused file: no row, so the import keeps the grade the student has
     student = module.roster(STUDENTS)[0]
     assert by_id[student.id][:5] == [student.name, "", student.id, student.email, student.section]
     assert 0 <= float(by_id[student.id][5]) <= 26
@@ -75,7 +75,7 @@ def test_the_moodle_grades_match_by_id_number_or_email(simulated):
     rows = list(csv.DictReader((graded / "moodle_grades.csv").open(encoding="utf-8")))
     assert list(rows[0]) == ["ID number", "Email address", "First name", "Last name", "Tutorial 1: Belt drives"]
     taker, _ = plan["copies"]["another_students_sheet_code"]
-    assert next(r for r in rows if r["ID number"] == taker)["Tutorial 1: Belt drives"] == ""
+    assert taker not in {r["ID number"] for r in rows} and len(rows) == STUDENTS - 1
     gradebook = {r["student"]: r["total"] for r in csv.DictReader((graded / "gradebook.csv").open(encoding="utf-8"))}
     assert all(r["Tutorial 1: Belt drives"] == gradebook[r["ID number"]] for r in rows)
 
