@@ -9,6 +9,7 @@ import pytest
 from lxml import etree
 
 from exgen.answertypes import answer_type
+from exgen.export.filters import moodle_units
 from exgen.export.html import LATEX_HTML
 from exgen.export.moodle import PLUGINFILE, moodle_xml
 from exgen.export.pool import make_item
@@ -109,7 +110,8 @@ def test_numerical_questions_round_trip_values_tolerances_units_and_mistakes():
         _in_tolerance_like_exgen(item, gap, part.id, gap.value, gap.tolerance)
         units = element.findall("units/unit")
         if gap.units:
-            assert [(u.findtext("unit_name"), float(u.findtext("multiplier"))) for u in units] == list(gap.units)
+            assert [(u.findtext("unit_name"), float(u.findtext("multiplier"))) for u in units] \
+                == [(name, written(m)) for name, m in moodle_units(gap.units)]
             assert float(units[0].findtext("multiplier")) == 1.0
             assert element.findtext("unitgradingtype") == "0" and element.findtext("showunits") == "0"
         assert float(element.findtext("defaultgrade")) == pytest.approx(item.points)

@@ -61,4 +61,18 @@ def fraction(value: Fraction | float) -> str:
     return number(float(value))
 
 
-FILTERS = {"num": number, "cloze": cloze, "b64": b64, "category": category, "fraction": fraction, "sentence": sentence, "text": as_text}
+def moodle_units(accepted) -> list[tuple[str, float]]:
+    """A numerical question's (unit name, multiplier) pairs as Moodle can match them. Moodle deletes every
+    space from a response before it splits off the unit (qtype_numerical_answer_processor::apply_units)
+    and then looks the rest up exactly, so "1.2 kN m" arrives as unit "kNm": a name with a space could
+    never match. Each name is written without its spaces, and with '*' for them too ("kN*m"); the first
+    of two names that come out the same is kept."""
+    out: dict[str, float] = {}
+    for name, multiplier in accepted:
+        for written in ("".join(name.split()), "*".join(name.split())):
+            out.setdefault(written, multiplier)
+    return list(out.items())
+
+
+FILTERS = {"num": number, "cloze": cloze, "b64": b64, "category": category, "fraction": fraction, "sentence": sentence,
+           "text": as_text, "moodle_units": moodle_units}
