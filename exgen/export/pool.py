@@ -8,7 +8,7 @@ pool says so in its notices; a question left with no part is left out whole.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from fractions import Fraction
 
 from markupsafe import Markup
@@ -23,6 +23,7 @@ from ..seeds import pool_seed
 from ..template import Template
 from ..variant import Variant, make_variant
 from .html import render
+from .mistakes import ordered_wrongs
 
 
 @dataclass(frozen=True)
@@ -158,11 +159,25 @@ def _item_part(variant: Variant, part, scale: float, target) -> ItemPart:
     order = [n for n in says if n in recorded] + [n for n in recorded if n not in says]  # as the grader tries them
     mistakes = {name: (recorded[name], target.text(message_for(name, says.get(name, "")))) for name in order}
     ask = target.text(variant.asks[part.id])
+    value = variant.answers[part.id].value
     try:
-        gaps = kind.lms_gaps(part, variant.answers[part.id].value, mistakes)
+        gaps = kind.lms_gaps(part, value, mistakes)
     except NoLmsForm as exc:
         return ItemPart(part.id, ask, part.points * scale, (), str(exc))
-    return ItemPart(part.id, ask, part.points * scale, tuple(gaps))
+    return ItemPart(part.id, ask, part.points * scale, tuple(_every_mistake(kind, part, value, mistakes, g) for g in gaps))
+
+
+def _every_mistake(kind, part, value, mistakes: dict, gap):
+    """A numeric gap with the wrong answer of each mistake taken alone (the gap lists a mistake whose value
+    lies near an earlier one's once only), ordered so that a learning system names the mistake exgen's
+    grader does (exgen.export.mistakes)."""
+    if gap.kind != "numeric" or len(mistakes) < 2:
+        return gap
+    wrongs: list = []
+    for name, mistake in mistakes.items():
+        alone = next(g for g in kind.lms_gaps(part, value, {name: mistake}) if g.key == gap.key)
+        wrongs += [w for w in alone.wrong if all(w.value != seen.value for seen in wrongs)]
+    return replace(gap, wrong=ordered_wrongs(wrongs))
 
 
 def solution_html(variant: Variant, target, key_figures: list[tuple[str, str]]) -> Markup:
