@@ -43,7 +43,29 @@ class UnknownTemplate(ExgenError, KeyError):
 
 
 class InvalidDraw(ExgenError, ValueError):
-    """Raised by a solver when drawn values give a physically invalid problem; the draw is retried."""
+    """Drawn values that give no valid problem: a template's `require:`, a solver's `d.require(...)`, or a
+    solver raising it by name. The one error that makes a draw be retried."""
+
+
+class NoAnswer(ExgenError, ValueError):
+    """A solver step that holds no answer of the asked kind (not a finite number, not an expression)."""
+
+
+class SolverFailure(ExgenError, RuntimeError):
+    """A solver that raised anything but InvalidDraw. In a draw it is a defect in the solver or its
+    physics, never a redraw; for values a user gave (`given`), the physics refusing them. Names the
+    template, the seed, the exception and where it rose."""
+
+    def __init__(self, template_id: str, error: BaseException, where: str = "", seed: int | None = None,
+                 given: str = ""):
+        self.template_id, self.error, self.where, self.seed, self.given = template_id, error, where, seed, given
+        self.reason = f"{type(error).__name__}: {error}" if str(error) else type(error).__name__
+        of = f"{template_id}, seed {seed}" if seed is not None else template_id
+        at = f" at {where}" if where else ""
+        if given:
+            super().__init__(f"{of}: the solver cannot work from {given}: {self.reason}{at}")
+        else:
+            super().__init__(f"{of}: the solver failed with {self.reason}{at}")
 
 
 class DrawError(ExgenError, RuntimeError):

@@ -1,6 +1,7 @@
 """`exgen validate`: draw many variants of each template and check what must always hold.
 
-Per variant: the constraints hold, every answer is a finite number of the asked kind, re-running
+A solver that raises anything but a rejection (InvalidDraw) fails the template: a crash is a defect,
+never a redraw. Per variant: the constraints hold, every answer is a finite number of the asked kind, re-running
 the derivation with its own answers changes nothing (ECF is consistent), and the key grades
 itself at 100 %. Per template: every mistake a part names is recorded by the solver and has words
 for the student, every part a part `uses:` changes its answer, and seeds give distinct problems.
@@ -14,7 +15,7 @@ from dataclasses import dataclass, field
 
 from .answertypes import answer_type
 from .draw import failed_requirement
-from .errors import ExgenError, FormatProblem, WrongKind
+from .errors import ExgenError, FormatProblem, SolverFailure, WrongKind
 from .mistake_messages import default_messages
 from .template import ReportSpec, Template
 from .variant import Variant, answer_for, make_variant, rerun
@@ -73,8 +74,8 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
     for seed in range(seeds):
         try:
             variants.append(make_variant(template, seed, rejected=report.rejected))
-        except ExgenError as exc:
-            report.problems.append(f"seed {seed}: {exc}")
+        except ExgenError as exc:  # a solver's crash among them: a defect, never a redraw
+            report.problems.append(f"seed {seed}: {_problem(exc)}")
             if len(report.problems) >= 5:
                 break
     if not variants:
@@ -95,6 +96,13 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
     if report.mean_tries > TRIES_WARNING:
         report.warnings.append(f"{report.mean_tries:.1f} draws per accepted variant: most draws break a constraint")
     return report
+
+
+def _problem(exc: ExgenError) -> str:
+    """A seed's problem; for a solver's crash, the exception and where it rose (the report names the template)."""
+    if isinstance(exc, SolverFailure):
+        return f"the solver failed with {exc.reason}" + (f" at {exc.where}" if exc.where else "")
+    return str(exc)
 
 
 def _check_reports(template: Template, variants: list[Variant], report: Report) -> None:
@@ -197,8 +205,8 @@ def _depends(part, used, variants: list[Variant]) -> bool | None:
         for other in others:
             try:
                 again = answer_for(part, rerun(variant, kind.overrides(used, other, variant))).value
-            except (ExgenError, ValueError, ArithmeticError):
-                continue  # the solver refuses this value
+            except ExgenError:
+                continue  # the solver refuses this value, or cannot work from it
             tried = True
             if not _same(again, variant.answers[part.id].value):
                 return True

@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import importlib
+import traceback
 from dataclasses import dataclass, field
 from decimal import Decimal
 from functools import cached_property, lru_cache
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
@@ -13,7 +15,7 @@ from .answertypes import answer_type
 from .answertypes.base import MISTAKE_GAP
 from .derivation import PLACEHOLDER, Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
-from .errors import DrawError, ExgenError, InvalidDraw, TemplateError
+from .errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
 from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
 from .template import PartSpec, Template
 from .text import render_text
@@ -157,7 +159,7 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
         odd = early_rejection(template, si)
         if odd is not None:
             raise Implausible(odd)
-    derivation = run_solver(template, si, strict=check)
+    derivation = run_solver(template, si, strict=check, seed=seed)
     derived = readings(template, names_for(si, derivation.steps))
     odd = first_implausible(derived)
     if odd is not None and check:
@@ -169,7 +171,10 @@ def build_variant(template: Template, values: dict, *, seed: int | None = None, 
     )
     answers, mistakes = {}, {}
     for part in template.parts:
-        answers[part.id] = answer_for(part, derivation)
+        try:
+            answers[part.id] = answer_for(part, derivation)
+        except NoAnswer as exc:  # an infinite or missing answer is the solver's defect, not a bad draw
+            raise SolverFailure(template.id, exc, seed=seed, given="" if check else "the values given") from exc
         mistakes[part.id] = MappingProxyType(mistakes_apart(part, answers[part.id].value, derivation, check))
     return Variant(
         template=template, seed=seed, params=params, steps=tuple(derivation.steps),
@@ -225,16 +230,42 @@ def mistakes_apart(part: PartSpec, answer, derivation: Derivation, check: bool =
     return kept
 
 
-def run_solver(template: Template, si: dict, overrides: dict | None = None, strict: bool = True) -> Derivation:
+def run_solver(template: Template, si: dict, overrides: dict | None = None, strict: bool = True,
+               seed: int | None = None) -> Derivation:
+    """The template's derivation for SI values. Only InvalidDraw (a `d.require` or a rejection the solver
+    raises by name) says the values give no problem; anything else the solver raises is its defect,
+    raised as SolverFailure naming the template, the seed, the exception and where it rose."""
     symbols = {s.name: s.symbol or default_symbol(s.name) for s in template.params}
     derivation = Derivation(Params(si, symbols), overrides, strict)
+    solver = resolve(template.solver, "solvers")
     try:
-        resolve(template.solver, "solvers")(derivation.params, derivation)
-    except (ZeroDivisionError, OverflowError, ValueError) as exc:
-        if isinstance(exc, ExgenError):
-            raise
-        raise InvalidDraw(f"solver failed: {exc}") from exc
+        solver(derivation.params, derivation)
+    except ExgenError:
+        raise
+    except Exception as exc:  # noqa: BLE001  (every other exception is a defect, reported as one)
+        given = "" if strict else "other earlier answers" if overrides else "the values given"
+        raise SolverFailure(template.id, exc, where_raised(exc), seed, given) from exc
     return derivation
+
+
+def where_raised(exc: BaseException) -> str:
+    """'exgen/mechanics/flywheels.py:160 in speed_after (from exgen/solvers/flywheels.py:88 in punching_press)':
+    the line that raised, and the solver's line that led there."""
+    frames = [f for f in traceback.extract_tb(exc.__traceback__) if f.name != "run_solver"]
+    if not frames:
+        return ""
+    raised = frames[-1]
+    solver = next((f for f in reversed(frames) if Path(f.filename).parent.name == "solvers"), raised)
+    text = f"{_short(raised.filename)}:{raised.lineno} in {raised.name}"
+    return text if solver is raised else f"{text} (from {_short(solver.filename)}:{solver.lineno} in {solver.name})"
+
+
+_ROOT = Path(__file__).resolve().parent.parent  # the folder holding the exgen package
+
+
+def _short(filename: str) -> str:
+    path = Path(filename).resolve()
+    return path.relative_to(_ROOT).as_posix() if path.is_relative_to(_ROOT) else filename
 
 
 def answer_for(part: PartSpec, derivation: Derivation) -> Answer:
@@ -252,4 +283,4 @@ def mistakes_for(part: PartSpec, derivation: Derivation) -> dict[str, Any]:
 
 def rerun(variant: Variant, overrides: dict[str, float]) -> Derivation:
     """The variant's derivation with some steps replaced (SI values), for error carried forward."""
-    return run_solver(variant.template, variant.si, overrides, strict=False)
+    return run_solver(variant.template, variant.si, overrides, strict=False, seed=variant.seed)

@@ -14,7 +14,7 @@ from exgen.answertypes import answer_type
 from exgen.answertypes.base import Given
 from exgen.assignment import Question
 from exgen.derivation import Derivation
-from exgen.errors import ExgenError, FormatProblem, WrongKind
+from exgen.errors import ExgenError, FormatProblem, SolverFailure, WrongKind
 from exgen.template import PartSpec
 from exgen.variant import Answer, answer_for, mistakes_for, rerun
 
@@ -24,6 +24,9 @@ from .results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult, Que
 NO_ANSWER = "no answer given"
 RIGHT = "correct"
 CARRIED_FORWARD = "correct from your {parts}"
+#: Added to a wrong answer's feedback when the working could not be carried on from the student's own
+#: earlier answers, so no credit could be carried forward (the reason is the instructor's, in report.md).
+NOT_CARRIED = "No credit could be carried forward from your {parts}: the working cannot be carried on from {them}"
 FORMAT_PROBLEM = "{reason}. This is a format problem, not a wrong answer: {how}."
 WRONG_KIND = "wrong_kind"
 ZERO_FRACTION = 1e-9  # below this fraction of the key, a value counts as zero
@@ -38,7 +41,7 @@ class QuestionMarker:
         self.variant = question.variant
         self.readings: dict[str, Given] = {}  # readable answers of the right kind, by part id
         self.right: set[str] = set()          # parts right against the key itself
-        self._reruns: dict[tuple, Derivation | None] = {}
+        self._reruns: dict[tuple, Derivation | str] = {}  # the derivation, or why there is none
 
     def mark(self, answers: Mapping[str, str], problems: Mapping[str, str] | None = None) -> QuestionResult:
         problems = problems or {}
@@ -75,6 +78,9 @@ class QuestionMarker:
             self.right.add(part.id)
             return result.make(CORRECT, RIGHT)
         carried = self._carried(part)
+        if isinstance(carried, _NotCarried):
+            result.not_carried = carried
+            carried = None
         if carried and _safe(matches, given.value, carried[0].value):
             return result.make(CARRIED, CARRIED_FORWARD.format(parts=_names(carried[2])))
         recorded = [self.variant.mistakes.get(part.id, {})] + ([carried[1]] if carried else [])
@@ -83,8 +89,10 @@ class QuestionMarker:
             return result.make(WRONG, mistake.message, mistake.name)
         return result.make(WRONG, kind.wrong_message(given, part))
 
-    def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | None:
-        """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong."""
+    def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | _NotCarried | None:
+        """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong;
+        None where nothing is carried by rule (no wrong earlier answer, or a trivial zero), and the reason
+        where the working could not be carried on from them."""
         wrong = [u for u in part.uses if u in self.readings and u not in self.right]
         if not wrong or any(_degenerate(self.readings[u].value, self.variant.answers[u].value) for u in wrong):
             return None
@@ -95,28 +103,48 @@ class QuestionMarker:
                 if used_id in self.readings:
                     used = template.part(used_id)
                     overrides.update(answer_type(used).overrides(used, self.readings[used_id].value, self.variant))
-        except (ExgenError, StopIteration, ValueError, ArithmeticError):
-            return None
+        except (ExgenError, ArithmeticError) as exc:  # a value its step cannot take (a unit, an overflow)
+            return _NotCarried(wrong, _reason(exc))
         derivation = self._rerun(overrides)
-        if derivation is None:
-            return None
+        if isinstance(derivation, str):
+            return _NotCarried(wrong, derivation)
         try:
             carried = answer_for(part, derivation)
             found = mistakes_for(part, derivation)
-        except (ExgenError, ValueError, ArithmeticError, KeyError):
-            return None
+        except ExgenError as exc:  # the working gives no answer of the asked kind from them
+            return _NotCarried(wrong, _reason(exc))
         if _degenerate(carried.value, self.variant.answers[part.id].value):
             return None
         return carried, found, wrong
 
-    def _rerun(self, overrides: dict[str, Any]) -> Derivation | None:
+    def _rerun(self, overrides: dict[str, Any]) -> Derivation | str:
+        """The derivation worked from the student's values, or why it cannot be (the solver refuses
+        them or fails on them): kept, since several parts may be worked from the same answers."""
         key = tuple(sorted((name, _key(value)) for name, value in overrides.items()))
         if key not in self._reruns:
             try:
                 self._reruns[key] = rerun(self.variant, overrides)
-            except (ExgenError, ValueError, ArithmeticError):
-                self._reruns[key] = None  # the solver rejects the student's values: no error carried forward
+            except ExgenError as exc:
+                self._reruns[key] = _reason(exc)
         return self._reruns[key]
+
+
+class _NotCarried:
+    """Why the answer to a part could not be worked from the student's wrong earlier answers."""
+
+    def __init__(self, parts: list[str], reason: str):
+        self.parts, self.reason = parts, reason
+
+    @property
+    def sentence(self) -> str:
+        return NOT_CARRIED.format(parts=_names(self.parts), them="them" if len(self.parts) > 1 else "it")
+
+
+def _reason(exc: ExgenError) -> str:
+    """What stopped the working, for the instructor: the exception and where, for a solver's failure."""
+    if isinstance(exc, SolverFailure):
+        return f"{exc.reason}" + (f" at {exc.where}" if exc.where else "")
+    return str(exc)
 
 
 class _Result:
@@ -125,11 +153,16 @@ class _Result:
     def __init__(self, part: PartSpec, answer: Answer, ask: str, text: str, scale: float):
         self.part, self.answer, self.ask, self.text = part, answer, ask, text or ""
         self.max_points = part.points * scale
+        self.not_carried: _NotCarried | None = None
 
     def make(self, status: str, message: str, mistake: str | None = None) -> PartResult:
         points = self.max_points if status in (CORRECT, CARRIED) else 0.0
+        why = ""
+        if self.not_carried is not None and status == WRONG:
+            message = f"{message.rstrip('.')}. {self.not_carried.sentence}"
+            why = self.not_carried.reason
         return PartResult(self.part.id, self.ask, self.part.unit, self.text, self.answer.text, status,
-                          points, self.max_points, message, mistake, self.answer.value)
+                          points, self.max_points, message, mistake, self.answer.value, why)
 
 
 def is_blank(text: str | None) -> bool:
@@ -154,9 +187,11 @@ def _degenerate(value, key) -> bool:
 
 
 def _safe(matches, given, expected) -> bool:
+    """A comparison that overflows or leaves a number's domain is no match; any other error is a defect
+    of the answer type and is raised."""
     try:
         return bool(matches(given, expected))
-    except (TypeError, ValueError, ArithmeticError):
+    except (ValueError, ArithmeticError):
         return False
 
 

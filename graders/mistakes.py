@@ -55,7 +55,8 @@ def generic_mistake(part: PartSpec, given: Given, expected: Any) -> Mistake | No
 
 
 def _safe_match(matches: Matcher, given, expected, widen: float = 1.0) -> bool:
+    """An overflow or a value outside a number's domain is no match; any other error is a defect, raised."""
     try:
         return bool(matches(given, expected, widen))
-    except (TypeError, ValueError, ArithmeticError):
+    except (ValueError, ArithmeticError):
         return False

@@ -180,6 +180,7 @@ def report_page(batch: BatchResult) -> str:
               "| Question | Part | Correct | of which carried | Wrong | Blank | Unreadable | Most common mistakes |",
               "|---|---|---:|---:|---:|---:|---:|---|"]
     lines += _item_rows(batch)
+    lines += _not_carried(batch)
     left = [s for s in batch.sheets if s.status != GRADED]
     if left:
         lines += ["", "## Not in the Canvas and Moodle gradebooks", "",
@@ -192,6 +193,18 @@ def report_page(batch: BatchResult) -> str:
     lines += [f"- `{_shown(_where(p.path, batch.submissions), 200)}`{' (' + p.student + ')' if p.student else ''}: "
               f"{_escape(p.reason)}" for p in batch.problems] or ["None."]
     return "\n".join(lines) + "\n"
+
+
+def _not_carried(batch: BatchResult) -> list[str]:
+    """Parts where the working could not be carried on from a student's wrong earlier answers, and why:
+    the student's feedback says no credit was carried forward; this says what stopped it."""
+    rows = [f"- {s.student.id}, {q.slot} ({p.part_id}): {_escape(p.not_carried, 1000)}"
+            for s in batch.sheets for q in s.questions for p in q.parts if p.not_carried]
+    if not rows:
+        return []
+    return ["", "## Error carried forward not worked", "",
+            "The working could not be carried on from these students' own earlier answers, so no credit was "
+            "carried forward (each student's feedback says so):", ""] + rows
 
 
 def _item_rows(batch: BatchResult) -> list[str]:

@@ -39,6 +39,9 @@ class PartResult:
     mistake: str | None = None
     #: the expected answer as a value (what `expected` writes), for comparing answers across sheets
     value: Any = field(default=None, compare=False, repr=False)
+    #: why no credit could be carried forward from the student's wrong earlier answers (the working failed
+    #: on them: the exception and where), for the instructor's report; "" when nothing stood in the way
+    not_carried: str = ""
 
     @property
     def correct(self) -> bool:

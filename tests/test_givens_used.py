@@ -2,7 +2,7 @@
 import pytest
 
 from exgen.bank import load_bank
-from exgen.errors import InvalidDraw
+from exgen.errors import InvalidDraw, SolverFailure
 from exgen.figures import figure_svg
 from exgen.render.solution import solution
 from exgen.render.text import variant_text
@@ -47,7 +47,7 @@ def _changes(variant, other) -> bool:
 def _changes_with(template, variant, values) -> bool:
     try:
         return _changes(variant, build_variant(template, values, check=False))
-    except InvalidDraw:
+    except (InvalidDraw, SolverFailure):
         return True  # the solver could not work without it: it is used
 
 

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
 from .. import units
-from ..errors import ExgenError, FormatProblem, InvalidDraw
+from ..errors import ExgenError, FormatProblem, NoAnswer
 from ..template import PartSpec, Tolerance
 
 #: A named mistake must land at least this many tolerances from the right answer; any closer and
@@ -98,7 +98,7 @@ class AnswerType:
         return (part.answer,)
 
     def expected(self, part: PartSpec, derivation) -> Any:
-        """The answer in the form it is asked (InvalidDraw when this draw gives none)."""
+        """The answer in the form it is asked (NoAnswer when the solver's steps hold none)."""
         return self.step_value(part, derivation, part.answer)
 
     def mistake_values(self, part: PartSpec, derivation) -> dict[str, Any]:
@@ -221,9 +221,9 @@ def refuse_long(text: str, limit: int = MAX_ANSWER_LENGTH) -> str:
 
 
 def finite(part: PartSpec, value) -> float:
-    """A solver value that must be a finite number; InvalidDraw (the draw is retried) otherwise."""
+    """A solver value that must be a finite number; NoAnswer (the solver's defect) otherwise."""
     if isinstance(value, bool) or not (isinstance(value, (int, float)) and math.isfinite(value)):
-        raise InvalidDraw(f"part {part.id}: answer {value!r} is not a finite number")
+        raise NoAnswer(f"part {part.id}: answer {value!r} is not a finite number")
     return float(value)
 
 

@@ -12,7 +12,7 @@ from fractions import Fraction
 from typing import Mapping
 
 from .. import units
-from ..errors import ExgenError, InvalidDraw, QuantityError
+from ..errors import ExgenError, NoAnswer, QuantityError
 from ..template import PartSpec, Tolerance
 from .angle import ANGLE_ABS_TOL_DEG, angle, direction_slip
 from .base import AnswerType, Given, Mistake, Report, asked_unit, exact_quantity, refuse_long
@@ -92,7 +92,7 @@ class PolarType(AnswerType):
         for name in {**sizes, **angles}:
             try:
                 out[name] = self._polar(part, derivation, sizes.get(name, right_size), angles.get(name, right_angle))
-            except InvalidDraw:
+            except NoAnswer:
                 continue
         return out
 
@@ -100,7 +100,7 @@ class PolarType(AnswerType):
     def _polar(part: PartSpec, derivation, magnitude, direction) -> Polar:
         """A polar answer in the asked unit, from SI magnitude and angle (rad)."""
         if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in (magnitude, direction)):
-            raise InvalidDraw(f"part {part.id}: answer {magnitude!r} at {direction!r} is not finite")
+            raise NoAnswer(f"part {part.id}: answer {magnitude!r} at {direction!r} is not finite")
         size = units.convert(float(magnitude), derivation[part.answer].unit, part.unit)
         return Polar.of(size, units.convert(float(direction), derivation[part.options["angle"]].unit, "deg"))
 

@@ -16,7 +16,7 @@ import re
 from functools import lru_cache
 from typing import Mapping
 
-from ..errors import InvalidDraw
+from ..errors import NoAnswer
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report
 from .expressions import CONSTANTS, FUNCTIONS, MAX_LENGTH, Expression, listed
@@ -85,7 +85,7 @@ class Symbolic(AnswerType):
     def expected(self, part: PartSpec, derivation) -> Expression:
         value = self.step_value(part, derivation, part.answer)
         if not isinstance(value, Expression):
-            raise InvalidDraw(f"part {part.id}: answer {value!r} is not an Expression")
+            raise NoAnswer(f"part {part.id}: answer {value!r} is not an Expression")
         return value
 
     def problem(self, value, part: PartSpec) -> str | None:

@@ -152,6 +152,8 @@ def porter_sleeve_friction(p, d):
     d.step("r_1", top.r, "m", formula=r"@e + @l\sin @alpha1")
     d.step("h_1", arms1.XZ, "m", formula=r"@l\cos @alpha1")
     d.step("IZ_1", arms1.IZ, "m", symbol=r"IZ_1", formula=r"@l\sin @alpha1")
+    d.require(gv.centrifugal_force(p.m, p.M * G - friction, arms1) > 0,
+              "no speed holds the top pose while the sleeve falls: friction outweighs the central load")
     up = d.step("omega_up", gv.equilibrium_speed(p.m, p.M * G + friction, arms1), "rad/s", symbol=r"\omega_{\max}",
                 formula=r"\sqrt{\frac{(@m\,@g + @M\,@g + @f)\,@IZ_1}{@m\,@r_1\,@h_1}}",
                 note="rising: friction adds to the sleeve load")
