@@ -38,9 +38,9 @@ RIGHT = Expression.parse("sqrt(2*K/(3*M + 8*m))/(2*pi)", SYMBOLS)
 
 @pytest.fixture(scope="module")
 def fixture_bank():
-    sys.modules["exgen.solvers.symbolic_fixture"] = symbolic_fixture  # where the loader looks for solvers
-    yield load_bank([FIXTURES])
-    del sys.modules["exgen.solvers.symbolic_fixture"]
+    with pytest.MonkeyPatch.context() as patch:  # put back as found, whatever ran in between
+        patch.setitem(sys.modules, "exgen.solvers.symbolic_fixture", symbolic_fixture)  # where solvers are found
+        yield load_bank([FIXTURES])
 
 
 @pytest.fixture(scope="module")
@@ -174,17 +174,14 @@ def test_latex(text, latex):
     ("symbols: {K: [0, 10]}", "symbols.K: a range is [low, high] with 0 < low < high"),
     ("symbols: [K, M, m]\n    tol: {abs: 1}", "tol.abs: not a tolerance of a symbolic answer; expected one of rel"),
 ])
-def test_the_part_is_checked_at_load(tmp_path, symbols, message):
+def test_the_part_is_checked_at_load(tmp_path, monkeypatch, symbols, message):
     text = (FIXTURES / "pulley_frequency.yaml").read_text(encoding="utf-8")
     text = text.replace("    symbols: {K: [1000, 5000], M: [2, 10], m: [1, 8]}\n", f"    {symbols}\n" if symbols else "")
     path = tmp_path / "t.yaml"
     path.write_text(text, encoding="utf-8")
-    sys.modules["exgen.solvers.symbolic_fixture"] = symbolic_fixture
-    try:
-        with pytest.raises(BankError) as info:
-            load_template(path)
-    finally:
-        del sys.modules["exgen.solvers.symbolic_fixture"]
+    monkeypatch.setitem(sys.modules, "exgen.solvers.symbolic_fixture", symbolic_fixture)
+    with pytest.raises(BankError) as info:
+        load_template(path)
     assert any(message in str(e) and re.search(r"t\.yaml:\d+: parts\.0\.", str(e)) for e in info.value.errors)
 
 

@@ -27,10 +27,8 @@ parts:
 
 
 @pytest.fixture(autouse=True)
-def fixture_solvers():
-    sys.modules["exgen.solvers.validate_fixture"] = validate_fixture
-    yield
-    del sys.modules["exgen.solvers.validate_fixture"]
+def fixture_solvers(monkeypatch):
+    monkeypatch.setitem(sys.modules, "exgen.solvers.validate_fixture", validate_fixture)  # put back as found
 
 
 def template(tmp_path: Path, solver: str, parts: str):
