@@ -14,7 +14,7 @@ from decimal import Decimal
 from functools import lru_cache
 from importlib import resources
 
-from .errors import DimensionError, QuantityError
+from .errors import DimensionError, ExgenError, QuantityError
 
 UNIT_TABLE = "data/unit_table.tsv"
 MAX_ANSWER_LENGTH = 80
@@ -147,27 +147,46 @@ def _canonical(dimensionality) -> str:
     return " * ".join(f"{name}^{power:g}" for name, power in sorted(dimensionality.items()))
 
 
-#: A word for each kind of quantity, keyed by an example unit (pint spells the dimensions).
-_KIND_EXAMPLES = {
-    "m": "length", "kg": "mass", "s": "time", "": "pure number", "rad": "angle",
-    "rad/s": "angular speed", "Hz": "frequency", "rad/s^2": "angular acceleration",
-    "m/s": "speed", "m/s^2": "acceleration", "N": "force", "J": "torque or energy", "W": "power",
-    "Pa": "pressure or stress", "kg/m": "mass per unit length", "m^2": "area", "m^3": "volume",
-    "kg/m^3": "density", "kg*m^2": "moment of inertia", "kg*m": "mass times radius",
-    "N/m": "stiffness", "N*s/m": "damping coefficient", "1/m": "number per unit length",
+#: Each kind of quantity, in a word a student understands, and the coherent SI unit solvers work it in
+#: (pint spells only dimensions: `describe` finds the word by the unit's dimension; `si_unit` the unit).
+SI_UNITS = {
+    "length": "m", "mass": "kg", "time": "s", "angle": "rad", "angular speed": "rad/s", "frequency": "Hz",
+    "speed": "m/s", "acceleration": "m/s^2", "angular acceleration": "rad/s^2", "force": "N",
+    "torque or energy": "N*m", "power": "W", "pressure or stress": "N/m^2", "mass per unit length": "kg/m",
+    "area": "m^2", "volume": "m^3", "density": "kg/m^3", "moment of inertia": "kg*m^2",
+    "mass times radius": "kg*m", "stiffness": "N/m", "damping coefficient": "N*s/m", "pure number": "",
+    "number per unit length": "1/m",
 }
+#: Units that are energies by name, where the dimension of torque and energy is one: their SI unit is J, not N·m.
+ENERGY_WORDS = ("joule", "watt", "calorie", "btu", "erg", "electron_volt")
 
 
 @lru_cache(maxsize=1)
 def _kinds() -> dict[tuple[str, int], str]:
-    infos = {example: unit_info(example) for example in _KIND_EXAMPLES}
-    return {(info.dims, info.angle): _KIND_EXAMPLES[example] for example, info in infos.items()}
+    infos = {kind: unit_info(unit) for kind, unit in SI_UNITS.items()}
+    return {(info.dims, info.angle): kind for kind, info in infos.items()}
 
 
 def describe(dims: str, angle: int = 0) -> str:
     """A word for a dimension that a student understands ("force", not "[length] * [mass] / [time] ** 2")."""
     kinds = _kinds()
     return kinds.get((dims, angle)) or kinds.get((dims, 0)) or f"quantity of dimension {dims}"
+
+
+def si_unit(unit: str) -> str | None:
+    """The SI unit a solver uses for a quantity printed in `unit`, or None if unknown (an energy in J)."""
+    try:
+        kind = unit_info(unit).kind
+    except ExgenError:
+        return None
+    if kind == "torque or energy" and _names_an_energy(unit):
+        return "J"
+    return SI_UNITS.get(kind)
+
+
+@lru_cache(maxsize=64)
+def _names_an_energy(unit: str) -> bool:
+    return any(word in spelled(unit) for word in ENERGY_WORDS)
 
 
 def to_si(value: float, unit: str) -> float:
@@ -291,9 +310,7 @@ def bank_units(bank) -> set[str]:
     table columns of a variant of each (the units their worked solutions are in)."""
     from .variant import make_variant
 
-    from .render.working import SI_UNITS
-
-    found = set(COMMON_UNITS) | set(_KIND_EXAMPLES) | set(SI_UNITS.values())
+    found = set(COMMON_UNITS) | set(SI_UNITS.values())
     for template in bank:
         found |= {p.unit for p in template.params} | {p.unit for p in template.parts}
         found |= {r.unit for r in template.report}

@@ -6,7 +6,8 @@ from types import SimpleNamespace
 import pytest
 
 from exgen.derivation import Column, Step, Table
-from exgen.render.solution import si_unit, solution
+from exgen.render.solution import solution
+from exgen.units import si_unit
 from exgen.render.targets import MARKDOWN, PLAIN, TYPST, number_parts
 from exgen.template import PartSpec
 from exgen.variant import Answer, ParamValue, make_variant

@@ -107,7 +107,7 @@ def cmd_solve(args) -> int:
 
 def _given_json(p) -> dict:
     """A given as printed, and in the SI unit the working uses (ω in rad/s for a speed in rpm)."""
-    from ..render.working import si_unit
+    from ..units import si_unit
 
     out = {"value": p.text, "unit": p.unit}
     if isinstance(p.si, float) and p.unit and si_unit(p.unit) not in (None, p.unit):

@@ -22,7 +22,7 @@ from ..errors import ExgenError
 from .arithmetic import NotArithmetic, evaluate
 from .formula import Formula, FormulaError, parse, written
 from .targets import MARKDOWN, PLAIN, SIG, number_parts
-from .working import Plan, in_unit, kind, plan, si_unit, used_in_si, values_of
+from .working import Plan, in_unit, kind, plan, used_in_si, values_of
 
 MAX_SIG = 7
 
@@ -186,7 +186,7 @@ def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
         if p.name in unused:
             continue
         si_text = None
-        target = si_unit(p.unit) if p.unit else None
+        target = units.si_unit(p.unit) if p.unit else None
         if p.name in in_si and isinstance(p.si, (int, float)) and target is not None:
             si_text = PLAIN.quantity(float(p.si), target)
         out.append(GivenLine(p.name, p.label, p.symbol or default_symbol(p.name), str(p), si_text))

@@ -13,6 +13,7 @@ from .. import units
 from .formula import terms, written
 from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_typst
 from .unicode_math import latex_to_unicode, text_to_plain
+from .widths import number_width, term_width
 
 SIG = 4
 _EXPONENT = re.compile(r"^(-?[\d.]+)e(-?\d+)$")
@@ -178,7 +179,7 @@ class Typst:
         """Each term of the formula in Typst, with its estimated width in em (for breaking long lines)."""
         marked = _marked(filled.formula.latex, tuple(f if isinstance(f, str) else None for f in filled.fills),
                          filled.numbers)
-        numbers = {str(i): (self.slot(f), number_width(f)) for i, f in enumerate(filled.fills) if not isinstance(f, str)}
+        numbers = {str(i): (self.slot(f), _number_width(f)) for i, f in enumerate(filled.fills) if not isinstance(f, str)}
         out = []
         for term, width, slots in _typst_terms(marked):
             out.append((_MARKER.sub(lambda m: numbers[m.group(1)][0], term),
@@ -209,16 +210,12 @@ def _marked(latex: str, symbols: tuple, numbers: bool) -> str:
 @lru_cache(maxsize=8192)
 def _typst_terms(marked: str) -> tuple[tuple[str, float, tuple[str, ...]], ...]:
     """(Typst, width in em without its numbers, the markers it holds) of each term."""
-    from .equations import term_width
-
     return tuple((latex_to_typst(term), term_width(term), tuple(_LATEX_MARKER.findall(term))) for term in terms(marked))
 
 
-def number_width(number) -> float:
-    """A generous width in em of a number standing in a formula."""
+def _number_width(number) -> float:
     mantissa, exponent = number_parts(number.value, number.sig) if number.exact is None else (number.exact, None)
-    width = 0.5 * len(mantissa.lstrip("-")) + (0.9 if mantissa.startswith("-") else 0.0)
-    return width + (2.8 + 0.35 * len(exponent) if exponent else 0.0) + (0.4 if number.degrees else 0.0)
+    return number_width(mantissa, exponent, number.degrees)
 
 
 class Plain:

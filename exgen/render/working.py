@@ -18,38 +18,6 @@ from ..derivation import default_symbol
 from ..errors import ExgenError, QuantityError
 from .formula import Formula
 
-#: The coherent SI unit in which solvers work, by kind of quantity (units.describe).
-SI_UNITS = {
-    "length": "m", "mass": "kg", "time": "s", "angle": "rad", "angular speed": "rad/s", "frequency": "Hz",
-    "speed": "m/s", "acceleration": "m/s^2", "angular acceleration": "rad/s^2", "force": "N",
-    "torque or energy": "N*m", "power": "W", "pressure or stress": "N/m^2", "mass per unit length": "kg/m",
-    "area": "m^2", "volume": "m^3", "density": "kg/m^3", "moment of inertia": "kg*m^2",
-    "mass times radius": "kg*m", "stiffness": "N/m", "damping coefficient": "N*s/m", "pure number": "",
-    "number per unit length": "1/m",
-}
-
-
-#: Units that are energies by name, where the dimension of torque and energy is one: their SI unit is J, not N·m.
-ENERGY_WORDS = ("joule", "watt", "calorie", "btu", "erg", "electron_volt")
-
-
-def si_unit(unit: str) -> str | None:
-    """The SI unit a solver uses for a quantity printed in `unit`, or None if unknown (an energy in J)."""
-    try:
-        kind = units.unit_info(unit).kind
-    except ExgenError:
-        return None
-    if kind == "torque or energy" and _names_an_energy(unit):
-        return "J"
-    return SI_UNITS.get(kind)
-
-
-@lru_cache(maxsize=64)
-def _names_an_energy(unit: str) -> bool:
-    spelled = units.spelled(unit)
-    return any(word in spelled for word in ENERGY_WORDS)
-
-
 @lru_cache(maxsize=512)
 def kind(unit: str) -> str:
     """'angle', 'number' (dimensionless, percent included) or 'dimensional'."""
@@ -82,7 +50,7 @@ class Value:
 def values_of(variant) -> dict[str, Value]:
     out = {}
     for p in variant.params:
-        si = si_unit(p.unit) if p.unit else ""
+        si = units.si_unit(p.unit) if p.unit else ""
         numeric = isinstance(p.si, (int, float)) and not isinstance(p.si, bool)
         out[p.name] = Value(p.name, p.si, si or "", p.unit if numeric else "", p.symbol or default_symbol(p.name),
                              p.text if numeric else None, False)
