@@ -70,3 +70,30 @@ def test_of_two_slips_close_together_the_one_typed_is_named(bank):
             listed = [m.when for m in part.mistakes]  # equal values name the first listed
             nearer = min(pair, key=lambda n: (abs(recorded[n] - read), listed.index(n)))
             assert grade(variant, "a", text).mistake == nearer
+
+
+@pytest.mark.parametrize("template_id", sorted(load_bank().templates))
+def test_every_mistake_a_solver_records_for_a_part_has_words(bank, template_id):
+    """Feedback names any recorded mistake a wrong answer matches, listed or not: each has the part's `say:`
+    or a shared default, never the general "a known slip"."""
+    template = bank.get(template_id)
+    silent = set()
+    for seed in range(15):
+        variant = make_variant(template, seed)
+        for part in template.parts:
+            says = {m.when for m in part.mistakes if m.say}
+            silent |= {(part.id, name) for name in variant.mistakes[part.id]
+                       if name not in says and name not in default_messages()}
+    assert not silent
+
+
+def test_shared_default_words_fit_every_part_that_uses_them(bank):
+    """A default is read wherever its slip is recorded: diameters for radii in a belt length or a speed, the
+    crossed-belt angle given for an open drive's larger pulley. Its words name no one formula's piece."""
+    words = default_messages()
+    assert "sin" not in words["diameters_for_radii"]
+    assert "θ = π − 2α" not in words["crossed_formula"] and "π + 2α on the larger" in words["crossed_formula"]
+    assert "pulley" not in words["ratio_inverted"].split(":")[0]
+    uses = {(t.id, p.id) for t in bank for p in t.parts for m in p.mistakes if m.when == "diameters_for_radii"}
+    kinds = {bank.get(t).part(p).unit for t, p in uses}
+    assert {"deg", "m"} <= kinds  # an angle and a length: one text serves both
