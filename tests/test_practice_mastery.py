@@ -4,8 +4,7 @@ from collections import Counter
 
 import pytest
 
-from practice.mastery import (DECAY, FLOOR, HINT_CREDIT, MASTERED, Mastery, Outcome, PartOutcome, choose,
-                                    mastery, problem_outcome)
+from practice.mastery import Mastery, Outcome, PartOutcome, choose, mastery, problem_outcome
 
 
 def right(n=1):
@@ -22,8 +21,9 @@ def test_nothing_tried_is_an_even_guess_and_not_started():
 
 
 def test_mastered_needs_five_right_in_a_row_from_nothing():
-    assert mastery(right(4)).mean < MASTERED <= mastery(right(5)).mean
-    assert mastery(right(5)).level == "mastered"
+    """Mastered from 0.8: four right give (1 + 0.8⁰ + ... + 0.8³)/(2 + the same) = 3.952/4.952 = 0.798."""
+    assert mastery(right(4)).mean == pytest.approx(3.952 / 4.952) and mastery(right(4)).level == "learning"
+    assert mastery(right(5)).mean == pytest.approx(4.3616 / 5.3616) and mastery(right(5)).level == "mastered"
 
 
 def test_recent_problems_count_most():
@@ -34,14 +34,15 @@ def test_recent_problems_count_most():
 
 
 def test_the_estimate_is_the_weighted_rate_with_its_prior():
+    """Right, then wrong: the older problem counts 0.8, the latest 1, over the prior Beta(1, 1)."""
     estimate = mastery([Outcome(1.0, 1.0), Outcome(0.0, 1.0)])
-    assert estimate.alpha == pytest.approx(1 + DECAY) and estimate.beta == pytest.approx(2)
-    assert estimate.mean == pytest.approx((1 + DECAY) / (3 + DECAY))
+    assert estimate.alpha == pytest.approx(1.8) and estimate.beta == pytest.approx(2)
+    assert estimate.mean == pytest.approx(1.8 / 3.8)
 
 
 @pytest.mark.parametrize("parts, expected", [
     ([PartOutcome(1, answered=True, right=True), PartOutcome(1, answered=True, right=False)], Outcome(0.5, 1.0)),
-    ([PartOutcome(2, answered=True, right=True, hinted=True), PartOutcome(2)], Outcome(HINT_CREDIT, 0.5)),
+    ([PartOutcome(2, answered=True, right=True, hinted=True), PartOutcome(2)], Outcome(0.5, 0.5)),  # half after hints
     ([PartOutcome(1, answered=True, right=True), PartOutcome(1, solution_first=True)], Outcome(0.5, 1.0)),
     ([PartOutcome(1), PartOutcome(1)], None),  # skipped: no evidence either way
 ])
@@ -55,7 +56,7 @@ def test_weak_topics_come_up_more_and_mastered_ones_still_now_and_then():
     topics = {"belts": mastery(wrong(4)), "gears": mastery(right(8))}  # vibration: not started
     counts = Counter(choose(candidates, topics, {}, rng).split(".")[0] for _ in range(3000))
     assert counts["belts"] > counts["vibration"] > counts["gears"] > 0
-    weak, new, strong = (1 - topics["belts"].mean, 0.5, max(FLOOR, 1 - topics["gears"].mean))
+    weak, new, strong = (1 - topics["belts"].mean, 0.5, max(0.05, 1 - topics["gears"].mean))  # a floor of 0.05
     assert counts["belts"] / 3000 == pytest.approx(weak / (weak + new + strong), abs=0.03)
 
 
