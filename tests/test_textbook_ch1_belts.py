@@ -13,23 +13,11 @@ import math
 
 import pytest
 
-from exgen.cli import solution_json
-from exgen.solve import solve
-
-
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {part: answer.value for part, answer in variant.answers.items()}, warnings
-
-
-def steps(bank, template_id, **given):
-    """Every step `exgen solve --json` prints, by name, in SI."""
-    variant, _ = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {step["name"]: step["value"] for step in solution_json(variant)["steps"]}
+from textbook_helpers import answers, printed_steps
 
 
 def test_example_1_1_driven_pulley_diameter(bank):
-    got, _ = answers(bank, "belts.driven_pulley_diameter", N1="300 rpm", N2="400 rpm", d1="60 cm", t="8 mm", G="5 %")
+    got, _, _ = answers(bank, "belts.driven_pulley_diameter", N1="300 rpm", N2="400 rpm", d1="60 cm", t="8 mm", G="5 %")
     assert got["a"] == pytest.approx(600 * 300 / 400)               # 450 mm
     assert got["b"] == pytest.approx((600 + 8) * 300 / 400 - 8)     # 448 mm
     assert got["c"] == pytest.approx(600 * 300 / 400 * 0.95)        # 427.5 mm
@@ -37,7 +25,7 @@ def test_example_1_1_driven_pulley_diameter(bank):
 
 
 def test_example_1_2_slip_on_each_pulley_adds(bank):
-    got, _ = answers(bank, "belts.driven_speed_slip", N1="1200 rpm", d1="40 cm", d2="70 cm", G1="3%", G2="3%", t="0 mm")
+    got, _, _ = answers(bank, "belts.driven_speed_slip", N1="1200 rpm", d1="40 cm", d2="70 cm", G1="3%", G2="3%", t="0 mm")
     assert got["a"] == pytest.approx(1200 * 40 / 70)
     assert got["b"] == pytest.approx(644.57, abs=0.005)  # printed answer: N2 = 644.57 rpm
     assert got["c"] == pytest.approx(got["b"])           # no thickness in the example
@@ -46,7 +34,7 @@ def test_example_1_2_slip_on_each_pulley_adds(bank):
 def test_example_1_3_contact_angles_and_lengths(bank):
     # Example 1.3 asks the angle of contact of the open and the crossed drive: on an open drive the two
     # sheaves differ (pi - 2 alpha on the smaller, pi + 2 alpha on the bigger); on a crossed one they agree.
-    got, warnings = answers(bank, "belts.drive_geometry", d1="3 cm", d2="7 cm", X="8 cm")
+    got, _, warnings = answers(bank, "belts.drive_geometry", d1="3 cm", d2="7 cm", X="8 cm")
     r1, r2, x = 1.5, 3.5, 8.0
     assert got["a"] == pytest.approx(180 - 2 * math.degrees(math.asin((r2 - r1) / x)))  # 151.04 deg
     assert got["b"] == pytest.approx(180 + 2 * math.degrees(math.asin((r2 - r1) / x)))  # 208.96 deg, bigger sheave
@@ -82,7 +70,7 @@ EXAMPLE_1_5 = dict(d1="0.5 m", d2="1.2 m", X="3.6 m", rho="2812.5 kg/m^3", A="32
 
 
 def test_example_1_5_flat_belt(bank):
-    got, warnings = answers(bank, "belts.flat_belt_power", **EXAMPLE_1_5)
+    got, _, warnings = answers(bank, "belts.flat_belt_power", **EXAMPLE_1_5)
     assert got == pytest.approx(_example_1_5_by_hand(), rel=1e-12)
     # the figures a student should reach: 168.8 deg, 5.236 m/s, 6.146 / 6.070 / 5.997 kW, 289.8 / 695.6 N m
     assert [round(got[k], 3) for k in "abcdefg"] == [168.842, 5.236, 6.146, 6.070, 5.997, 289.827, 695.585]
@@ -94,11 +82,10 @@ def test_example_1_5_flat_belt(bank):
                          ("g", "centrifugal_ignored"))] + ["belt density 2812 kg/m³ is outside the plausible 1000-1500 kg/m³"]
 
 
-
 def test_examples_1_5_and_1_6_mass_tension_and_the_larger_pulleys_angle(bank):
     # (a) "the angle of contact": on the smaller pulley 168.84 deg, on the larger 191.16 deg.
     for template_id, extra in (("belts.flat_belt_power", {}), ("belts.v_belt_power", {"groove": "60 deg"})):
-        got = steps(bank, template_id, **EXAMPLE_1_5, **extra)
+        got = printed_steps(bank, template_id, **EXAMPLE_1_5, **extra)
         alpha = math.asin(0.35 / 3.6)
         assert got["theta_large"] == pytest.approx(math.pi + 2 * alpha)
         assert round(math.degrees(got["theta_large"]), 2) == 191.16
@@ -106,13 +93,13 @@ def test_examples_1_5_and_1_6_mass_tension_and_the_larger_pulleys_angle(bank):
 
 
 def test_example_1_6_v_belt(bank):
-    got, _ = answers(bank, "belts.v_belt_power", groove="60 deg", **EXAMPLE_1_5)
+    got, _, _ = answers(bank, "belts.v_belt_power", groove="60 deg", **EXAMPLE_1_5)
     assert got == pytest.approx(_example_1_5_by_hand(groove_half_angle=math.radians(30)), rel=1e-12)
     assert [round(got[k], 3) for k in "cde"] == [8.685, 8.578, 8.431]
 
 
 def test_problem_1_3_number_of_v_belts(bank):
-    got, _ = answers(bank, "belts.v_belt_count", P="100 kW", N2="250 rpm", N1="1250 rpm", d2_max="1 m",
+    got, _, _ = answers(bank, "belts.v_belt_count", P="100 kW", N2="250 rpm", N1="1250 rpm", d2_max="1 m",
                      X="1.75 m", v_max="1800 m/min", A="400 mm^2", rho="1000 kg/m^3", sigma="3.25 MPa",
                      groove="60 deg", mu="0.3", idler="10 %")
     d1 = 1.0 * 250 / 1250                                     # 0.2 m motor pulley
@@ -121,7 +108,7 @@ def test_problem_1_3_number_of_v_belts(bank):
     t1, tc = 3.25e6 * 400e-6, 1000 * 400e-6 * v ** 2          # 1300 N, 68.5 N
     per_belt = (t1 - tc) * (1 - math.exp(-0.3 * theta / 0.5)) * v
     assert got["a"] == math.ceil(100e3 / per_belt) == 8      # 12.89 kW a belt
-    exact = steps(bank, "belts.v_belt_count", P="100 kW", N2="250 rpm", N1="1250 rpm", d2_max="1 m", X="1.75 m",
+    exact = printed_steps(bank, "belts.v_belt_count", P="100 kW", N2="250 rpm", N1="1250 rpm", d2_max="1 m", X="1.75 m",
                   v_max="1800 m/min", A="400 mm^2", rho="1000 kg/m^3", sigma="3.25 MPa", groove="60 deg", mu="0.3",
                   idler="10 %")["n_exact"]
     assert exact == pytest.approx(100e3 / per_belt) and round(exact, 2) == 7.76  # before rounding up to 8
@@ -131,7 +118,7 @@ def test_problem_1_3_number_of_v_belts(bank):
 
 
 def test_problem_1_4_countershaft_speed(bank):
-    got, _ = answers(bank, "belts.compound_drive", N1="1440 rpm", d1="500 mm", d2="800 mm", d3="450 mm",
+    got, _, _ = answers(bank, "belts.compound_drive", N1="1440 rpm", d1="500 mm", d2="800 mm", d3="450 mm",
                      d4="650 mm", G="2 %", t="20 mm")
     main = 1440 * (500 + 20) / (800 + 20) * 0.98
     assert got["a"] == pytest.approx(main)
@@ -141,7 +128,7 @@ def test_problem_1_4_countershaft_speed(bank):
 
 def test_max_power_condition_is_a_third(bank):
     # 1000 mm² at 1000 kg/m³ is 1 kg/m; 3 MPa on it is 3 kN
-    got, _ = answers(bank, "belts.max_power", d1="300 mm", d2="900 mm", X="3 m", mu="0.3", A="1000 mm^2",
+    got, _, _ = answers(bank, "belts.max_power", d1="300 mm", d2="900 mm", X="3 m", mu="0.3", A="1000 mm^2",
                      rho="1000 kg/m^3", sigma="3 MPa")
     v = math.sqrt(3000 / 3)
     theta = math.pi - 2 * math.asin(0.3 / 3)

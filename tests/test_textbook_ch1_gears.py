@@ -41,27 +41,16 @@ import math
 
 import pytest
 
-from exgen.cli import solution_json
 from exgen.solve import solve
 from exgen.variant import make_variant
+from textbook_helpers import answers, printed_steps
 
 G = 9.81
 RPM = 2 * math.pi / 60
 
 
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {part: answer.value for part, answer in variant.answers.items()}, warnings
-
-
-def steps(bank, template_id, **given):
-    """Every step `exgen solve --json` prints, by name, in SI."""
-    variant, _ = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {step["name"]: step["value"] for step in solution_json(variant)["steps"]}
-
-
 def test_example_1_7_compound_train_in_inches(bank):
-    got, warnings = answers(bank, "gears.compound_train", N2="1800 rpm", sense2="clockwise", t2=12, P23="12 1/in",
+    got, _, warnings = answers(bank, "gears.compound_train", N2="1800 rpm", sense2="clockwise", t2=12, P23="12 1/in",
                             d3="2.5 in", t4=15, P45="10 1/in", d5="3 in", d6="1.5 in", t7=32, P67="8 1/in")
     d2, d4, d7 = 12 / 12, 15 / 10, 32 / 8                     # 1, 1.5 and 4 in
     ratio = (d2 / 2.5) * (d4 / 3.0) * (1.5 / d7)             # 0.075
@@ -72,7 +61,7 @@ def test_example_1_7_compound_train_in_inches(bank):
 
 
 def test_example_1_8_reverted_train(bank):
-    got, _ = answers(bank, "gears.reverted_train", m1="2 mm", m2="3 mm", t1=24, t2=120, t3=24, NA="1000 rpm")
+    got, _, _ = answers(bank, "gears.reverted_train", m1="2 mm", m2="3 mm", t1=24, t2=120, t3=24, NA="1000 rpm")
     assert got["a"] == (2 * 24 + 2 * 120 - 3 * 24) / 3 == 72   # printed: 72 T
     assert got["b"] == pytest.approx(2 * 24 / 2 + 2 * 120 / 2)  # printed: 144 mm
     assert got["c"] == pytest.approx(1000 * (24 / 120) * (24 / 72))
@@ -81,7 +70,7 @@ def test_example_1_8_reverted_train(bank):
 
 def test_example_1_9_gear_pair_power(bank):
     # 20 cm and 60 cm pitch diameters with 20 and 60 teeth: a 10 mm module
-    got, _ = answers(bank, "gears.gear_pair_power", m="10 mm", t1=20, t2=60, tau1="80 N*m", N1="300 rpm", eta="85 %")
+    got, _, _ = answers(bank, "gears.gear_pair_power", m="10 mm", t1=20, t2=60, tau1="80 N*m", N1="300 rpm", eta="85 %")
     assert got["a"] == pytest.approx(1 / 3)                  # printed: n = 1/3, opposite direction
     assert got["b"] == pytest.approx(600)                    # 60 cm
     assert got["c"] == pytest.approx(240)                    # printed: 240 N m
@@ -101,17 +90,17 @@ EXAMPLE_1_11 = dict(ts=30, tp=35, planets=2, fixed="sun", driver="arm", N_in="12
 
 
 def test_example_1_10_ring_fixed_arm_drives_sun(bank):
-    got, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_10)
+    got, _, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_10)
     assert got["a"] == 60
     assert got["b"] == pytest.approx(-15 / 60)
     assert got["c"] / 100 == pytest.approx(5.0)              # printed: N2/NA = +5, the same direction
     assert got["d"] == pytest.approx(100 * (1 - 60 / 22.5))  # the planet: row (c) = 1 + (-1)(60/22.5)
-    assert steps(bank, "gears.epicyclic", **EXAMPLE_1_10)["n_train"] == pytest.approx(5.0)  # the asked N2/NA
+    assert printed_steps(bank, "gears.epicyclic", **EXAMPLE_1_10)["n_train"] == pytest.approx(5.0)  # the asked N2/NA
     assert warnings == []
 
 
 def test_example_1_11_sun_fixed_arm_drives(bank):
-    got, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_11)
+    got, _, warnings = answers(bank, "gears.epicyclic", **EXAMPLE_1_11)
     assert got["a"] == 100                                   # the text's ring has 100 teeth
     assert got["c"] == pytest.approx(-1200 * (1 + 30 / 100))  # printed: -1560 rpm, clockwise
     assert got["c"] == pytest.approx(-1560)
@@ -122,7 +111,7 @@ def test_example_1_11_sun_fixed_arm_drives(bank):
 
 def test_example_1_11_every_member(bank):
     # "Determine the rotational velocity of all members": sun (fixed) 0, arm -1200, planet -2228.57, ring -1560.
-    got = steps(bank, "gears.epicyclic", **EXAMPLE_1_11)
+    got = printed_steps(bank, "gears.epicyclic", **EXAMPLE_1_11)
     assert got["N_fixed"] == 0.0
     assert got["w_in"] == pytest.approx(-1200 * RPM)
     assert got["N_planet"] == pytest.approx(-1200 * (1 + 30 / 35) * RPM)
@@ -132,12 +121,12 @@ def test_example_1_11_every_member(bank):
 
 
 def test_example_1_11_driven_from_the_ring_gives_the_arm_back(bank):
-    got, _ = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "driver": "gear", "N_in": "1560 rpm"})
+    got, _, _ = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "driver": "gear", "N_in": "1560 rpm"})
     assert got["c"] == pytest.approx(-1200)
 
 
 def test_example_1_11_planets_that_do_not_assemble_are_named(bank):
-    _, warnings = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "planets": 3})
+    _, _, warnings = answers(bank, "gears.epicyclic", **{**EXAMPLE_1_11, "planets": 3})
     assert warnings == ["these values break the template's drawing constraint '(2 * ts + 2 * tp) % planets == 0'"]
 
 
@@ -146,7 +135,7 @@ EXAMPLE_1_12 = dict(M="250 kg", a="1.2 m/s^2", dD="1.2 m", t1=20, t2=200, eta="9
 
 
 def test_example_1_12_hoist(bank):
-    got, warnings = answers(bank, "gears.hoist_torque", **EXAMPLE_1_12)
+    got, _, warnings = answers(bank, "gears.hoist_torque", **EXAMPLE_1_12)
     n, eta, r = 0.1, 0.9, 0.6
     i_eq = 250 * 0.1 ** 2 + 1100 * 0.5 ** 2 * n ** 2 / eta   # printed: 5.56 kg m²
     alpha_m = 1.2 / r / n                                    # printed: 20 rad/s²
@@ -164,7 +153,7 @@ def test_example_1_12_hoist(bank):
 
 
 def test_problem_1_1_robot_arm(bank):
-    got, _ = answers(bank, "gears.robot_arm", k12=2, k34=1.5, I_m="0.05 kg*m^2", I_G1="0.025 kg*m^2",
+    got, _, _ = answers(bank, "gears.robot_arm", k12=2, k34=1.5, I_m="0.05 kg*m^2", I_G1="0.025 kg*m^2",
                      I_G2="0.1 kg*m^2", I_G3="0.025 kg*m^2", I_G4="0.008 kg*m^2", m="10 kg", L="0.3 m", eta="90 %",
                      theta="30 deg", alpha_A="2 rad/s^2")
     n12, n = 1 / 2, 1 / 3
@@ -175,14 +164,14 @@ def test_problem_1_1_robot_arm(bank):
     assert got["b"] == pytest.approx(c_coeff * math.cos(math.radians(30)))
     assert got["c"] == pytest.approx(a_coeff * 2 + c_coeff * math.cos(math.radians(30)))
     # the asked equation itself: its two coefficients
-    coeffs = steps(bank, "gears.robot_arm", k12=2, k34=1.5, I_m="0.05 kg*m^2", I_G1="0.025 kg*m^2",
+    coeffs = printed_steps(bank, "gears.robot_arm", k12=2, k34=1.5, I_m="0.05 kg*m^2", I_G1="0.025 kg*m^2",
                    I_G2="0.1 kg*m^2", I_G3="0.025 kg*m^2", I_G4="0.008 kg*m^2", m="10 kg", L="0.3 m", eta="90 %",
                    theta="30 deg", alpha_A="2 rad/s^2")
     assert coeffs["k_alpha"] == pytest.approx(a_coeff) and coeffs["k_weight"] == pytest.approx(c_coeff)
 
 
 def test_problem_1_2_lift_counterweight(bank):
-    got, warnings = answers(bank, "gears.lift_counterweight", tau_M="1000 N*m", eta="90 %", ml="2000 kg",
+    got, _, warnings = answers(bank, "gears.lift_counterweight", tau_M="1000 N*m", eta="90 %", ml="2000 kg",
                             a="0.5 m/s^2", R="500 N", dD="1 m", t1=80, t2=100, t3=20, t4=40, I_M="2 kg*m^2",
                             I_T="20 kg*m^2", I_D="50 kg*m^2")
     n1, n, eta = 0.8, 0.4, 0.9
@@ -202,7 +191,7 @@ def test_problem_1_2_lift_counterweight(bank):
 
 
 def test_problem_1_5_printed_data_give_a_63_degree_hill(bank):
-    got, warnings = answers(bank, "gears.vehicle_gradient", m="1600 kg", v="50 km/h", I_E="0.3 kg*m^2",
+    got, _, warnings = answers(bank, "gears.vehicle_gradient", m="1600 kg", v="50 km/h", I_E="0.3 kg*m^2",
                             I_W="0.6 kg*m^2", eta="95 %", r="0.38 m", R="800 N", tau_E="1100 N*m", N_E="2000 rpm",
                             a="0.5 m/s^2", tau_fE="6 N*m", tau_fW="20 N*m")
     omega_w = 50 / 3.6 / 0.38
@@ -217,7 +206,7 @@ def test_problem_1_5_printed_data_give_a_63_degree_hill(bank):
     assert round(got["c"], 1) == 63.0
     assert "not a road gradient (1-12 degrees)" in warnings
     # "the gear ratio for second gear", as gearboxes quote it: engine to wheel, 5.73 : 1
-    ratio = steps(bank, "gears.vehicle_gradient", m="1600 kg", v="50 km/h", I_E="0.3 kg*m^2", I_W="0.6 kg*m^2",
+    ratio = printed_steps(bank, "gears.vehicle_gradient", m="1600 kg", v="50 km/h", I_E="0.3 kg*m^2", I_W="0.6 kg*m^2",
                   eta="95 %", r="0.38 m", R="800 N", tau_E="1100 N*m", N_E="2000 rpm", a="0.5 m/s^2",
                   tau_fE="6 N*m", tau_fW="20 N*m")["ratio_EW"]
     assert ratio == pytest.approx(1 / n) and round(ratio, 2) == 5.73
@@ -230,7 +219,7 @@ def test_problem_1_5_drawn_variants_climb_roads(bank):
 
 
 def test_problem_1_6_haulage(bank):
-    got, _ = answers(bank, "gears.haulage_power", dD="0.8 m", s=20, f="1750 N", tau_D="4000 N*m", a="0.8 m/s^2",
+    got, _, _ = answers(bank, "gears.haulage_power", dD="0.8 m", s=20, f="1750 N", tau_D="4000 N*m", a="0.8 m/s^2",
                      eta="90 %", tau_fM="10 N*m", tau_fD="20 N*m", N_M="1250 rpm", I_M="9 kg*m^2", I_D="60 kg*m^2",
                      t1=25, t2=125)
     mass = (4000 / 0.4 - 1750) / (0.8 + G / 20)
@@ -243,7 +232,7 @@ def test_problem_1_6_haulage(bank):
 
 @pytest.mark.parametrize("module, t1, t2, rpm", [(4, 20, 60, 900), (2.5, 18, 81, 1440)])
 def test_pitch_geometry_formulae(bank, module, t1, t2, rpm):
-    got, _ = answers(bank, "gears.pitch_geometry", m=f"{module} mm", t1=t1, t2=t2, N1=f"{rpm} rpm")
+    got, _, _ = answers(bank, "gears.pitch_geometry", m=f"{module} mm", t1=t1, t2=t2, N1=f"{rpm} rpm")
     assert got["a"] == pytest.approx(math.pi * module)
     assert (got["b"], got["c"]) == pytest.approx((module * t1, module * t2))
     assert got["d"] == pytest.approx(module * (t1 + t2) / 2)
@@ -253,7 +242,7 @@ def test_pitch_geometry_formulae(bank, module, t1, t2, rpm):
 
 
 def test_teeth_for_a_centre_distance(bank):
-    got, warnings = answers(bank, "gears.teeth_for_centre_distance", C="240 mm", m="4 mm", k=3, N1="960 rpm")
+    got, _, warnings = answers(bank, "gears.teeth_for_centre_distance", C="240 mm", m="4 mm", k=3, N1="960 rpm")
     assert (got["a"], got["b"]) == (30, 90)                  # t1 + t2 = 2 x 240 / 4 = 120, split 1 : 3
     assert got["c"] == pytest.approx(960 * RPM * 0.120 / 2)
     assert warnings == []
@@ -262,7 +251,7 @@ def test_teeth_for_a_centre_distance(bank):
 @pytest.mark.parametrize("idlers, sense, expected", [(1, "clockwise", "clockwise"), (2, "clockwise", "counter-clockwise"),
                                                      (1, "counter-clockwise", "counter-clockwise")])
 def test_simple_train_idlers_set_the_sense_but_not_the_speed(bank, idlers, sense, expected):
-    got, _ = answers(bank, "gears.simple_train", m="3 mm", idlers=idlers, t1=20, ta=35, tb=28, t2=50, N1="1000 rpm",
+    got, _, _ = answers(bank, "gears.simple_train", m="3 mm", idlers=idlers, t1=20, ta=35, tb=28, t2=50, N1="1000 rpm",
                      sense1=sense)
     assert got["a"] == pytest.approx(1000 * 20 / 50)
     assert got["b"] == expected

@@ -13,22 +13,10 @@ import math
 
 import pytest
 
-from exgen.cli import solution_json
 from exgen.mechanics import engines as me
-from exgen.solve import solve
+from textbook_helpers import answers, printed_steps
 
 OMEGA_2000 = 2 * math.pi * 2000 / 60
-
-
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {part: answer.value for part, answer in variant.answers.items()}, warnings
-
-
-def steps(bank, template_id, **given):
-    """Every step `exgen solve --json` prints, by name, in SI (angles in radians)."""
-    variant, _ = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return {step["name"]: step["value"] for step in solution_json(variant)["steps"]}
 
 
 def degrees_is(radians, angle_deg, abs_deg=0.01):
@@ -44,13 +32,13 @@ def polar_is(value, magnitude, angle_deg, rel=1e-4, abs_deg=0.01):
 def test_example_2_1_static_balance(bank):
     # Example 2.1: 3 kg at 1 mm (0 deg) and 2 kg at 2 mm (90 deg); Bb = 5 kg mm at 233.13 deg.
     # The template has a third mass; with m3 = 0 it is the example exactly.
-    got, _ = answers(bank, "balancing.static_balance", m1="3 kg", r1="1 mm", m2="2 kg", r2="2 mm", theta2="90 deg",
+    got, _, _ = answers(bank, "balancing.static_balance", m1="3 kg", r1="1 mm", m2="2 kg", r2="2 mm", theta2="90 deg",
                      m3="0 kg", r3="1 mm", theta3="180 deg", b="1 mm")
     assert got["a"].magnitude == pytest.approx(5.0)
     assert got["a"].angle_deg == pytest.approx(270 - 36.8699, abs=1e-4)  # printed: 233.13 deg
     assert got["b"] == pytest.approx(5.0)  # "Assuming B = 5 kg; then b = 1 mm"
     # (b) "excluding a mass": the same m r taken off half a turn round, at 53.13 deg
-    removed = steps(bank, "balancing.static_balance", m1="3 kg", r1="1 mm", m2="2 kg", r2="2 mm", theta2="90 deg",
+    removed = printed_steps(bank, "balancing.static_balance", m1="3 kg", r1="1 mm", m2="2 kg", r2="2 mm", theta2="90 deg",
                     m3="0 kg", r3="1 mm", theta3="180 deg", b="1 mm")["theta_b_remove"]
     assert degrees_is(removed, 90 - 36.8699, abs_deg=1e-4)
 
@@ -59,7 +47,7 @@ def test_example_2_2_two_planes_reference_x(bank):
     # Example 2.2 (and its analytical rework in §2.2): 3 kg at 1 mm, 0 deg, 1 m from X; 2 kg at 2 mm,
     # 90 deg, 2 m from X. The text balances in plane X (b2 = 1 mm) and in a plane x from X with
     # B1 = 3 kg at b1 = 1.9 mm, "so x = 1.5 m". With Q at 1.5 m and r_Q = 1.9 mm:
-    got, _ = answers(bank, "balancing.two_plane_balance", m1="3 kg", r1="1 mm", theta1="0 deg", z1="1 m",
+    got, _, _ = answers(bank, "balancing.two_plane_balance", m1="3 kg", r1="1 mm", theta1="0 deg", z1="1 m",
                      m2="2 kg", r2="2 mm", theta2="90 deg", z2="2 m", m3="0 kg", r3="1 mm", theta3="0 deg",
                      z3="3 m", zP="0 m", zQ="1.5 m", rP="1 mm", rQ="1.9 mm")
     moment = math.hypot(3, 8)                                      # 8.544 kg mm m; printed 8.6 (graphical)
@@ -78,7 +66,7 @@ def test_example_2_2_the_correction_plane_found_from_its_mass(bank):
     # 249.4 deg (read as 250); "if we assume B1 = 3 kg and b1 = 1.9 mm; so x = 1.5 m" (exactly 1.499 m, or
     # 1.509 m from the reading 8.6). The force polygon then gives B2 b2 = 1.7 kg mm at 126 deg: with b2 = 1 mm,
     # B2 = 1.67 kg. (The third mass of the template is set to nothing.)
-    got, warnings = answers(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)
+    got, _, warnings = answers(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)
     moment = math.hypot(3, 8)
     theta_q = 180 + math.degrees(math.atan(8 / 3))                 # 249.44 deg
     assert got["a"] == pytest.approx(theta_q) and round(got["a"], 1) == 249.4
@@ -87,14 +75,14 @@ def test_example_2_2_the_correction_plane_found_from_its_mass(bank):
     fy = 4 + 3 * 1.9 * math.sin(math.radians(theta_q))
     assert polar_is(got["c"], math.hypot(fx, fy) / 1, math.degrees(math.atan2(-fy, -fx)) % 360)
     assert round(got["c"].magnitude, 2) == 1.67 and round(got["c"].angle_deg) == 127  # printed 1.67 kg at 126 deg
-    assert steps(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)["MQ"] == pytest.approx(moment * 1e-3)  # kg mm m
+    assert printed_steps(bank, "balancing.correction_plane_position", **EXAMPLE_2_2)["MQ"] == pytest.approx(moment * 1e-3)  # kg mm m
     # the text's masses are tiny against the correction: the template would never draw them
     assert warnings == []
 
 
 def test_example_2_5_two_planes_reference_p(bank):
     # Example 2.5: planes P, 1, 2, Q each 1.2 m apart; 2 kg at 40 mm, 90 deg; 1 kg at 50 mm, 0 deg.
-    got, _ = answers(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
+    got, _, _ = answers(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
                      m2="1 kg", r2="50 mm", theta2="0 deg", z2="2.4 m", m3="0 kg", r3="1 mm", theta3="0 deg",
                      z3="3 m", zP="0 m", zQ="3.6 m", rP="30 mm", rQ="20 mm")
     moment = math.hypot(96, 120)                                   # 153.7 kg mm m; printed 154
@@ -105,7 +93,7 @@ def test_example_2_5_two_planes_reference_p(bank):
     assert polar_is(got["b"], math.hypot(fx, fy) / 30, math.degrees(math.atan2(-fy, -fx)) % 360)
     assert round(got["b"].magnitude, 3) == 1.863 and round(got["b"].angle_deg, 1) == 252.6  # printed 1.87 kg, 253 deg
     # "OR mass 2.14 kg should be removed at angle 38 deg" (and 1.87 kg at 73 deg in P)
-    removed = steps(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
+    removed = printed_steps(bank, "balancing.two_plane_balance", m1="2 kg", r1="40 mm", theta1="90 deg", z1="1.2 m",
                     m2="1 kg", r2="50 mm", theta2="0 deg", z2="2.4 m", m3="0 kg", r3="1 mm", theta3="0 deg",
                     z3="3 m", zP="0 m", zQ="3.6 m", rP="30 mm", rQ="20 mm")
     assert degrees_is(removed["theta_Q_remove"], q_angle - 180) and round(q_angle - 180) == 39  # printed 38
@@ -116,7 +104,7 @@ def test_example_2_3_complete_balance_erratum(bank):
     # Example 2.3: A 7.5 kg at 30 mm, B ? at 36 mm, C 5 kg at 39 mm, D 4 kg at 33 mm; AB 0.4 m, BC 0.5 m.
     # The text's table lists A at 90 deg but reads D (223 deg) and B (106 deg) the other way round from C;
     # measured in the sense the text reads them, A is at 270 deg.
-    got, _ = answers(bank, "balancing.complete_balance_position", mA="7.5 kg", rA="30 mm", thetaA="270 deg",
+    got, _, _ = answers(bank, "balancing.complete_balance_position", mA="7.5 kg", rA="30 mm", thetaA="270 deg",
                      rB="36 mm", mC="5 kg", rC="39 mm", mD="4 kg", rD="33 mm", lAB="0.4 m", lBC="0.5 m")
     moment = math.hypot(7.5 * 30 * 0.4, 5 * 39 * 0.5)             # 132.7 kg mm m; printed 133
     assert got["a"] == pytest.approx(moment / (4 * 33) - 0.5)     # 0.5052 m; printed 0.51 m
@@ -130,7 +118,7 @@ def test_example_2_3_complete_balance_erratum(bank):
 def test_example_2_4_bearing_forces_erratum(bank):
     # Example 2.4: A 8 kg at 60 mm, B 10 kg at 50 mm (60 deg), C 6 kg at 40 mm (270 deg); order A X B Y C
     # with gaps 0.2, 0.5, 0.3, 0.3 m; 90 rpm; reference plane X.
-    got, _ = answers(bank, "balancing.bearing_reactions", mA="8 kg", rA="60 mm", mB="10 kg", rB="50 mm",
+    got, _, _ = answers(bank, "balancing.bearing_reactions", mA="8 kg", rA="60 mm", mB="10 kg", rB="50 mm",
                      thetaB="60 deg", mC="6 kg", rC="40 mm", thetaC="270 deg", a="0.2 m", b="0.5 m", c="0.3 m",
                      e="0.3 m", N="90 rpm")
     omega2 = (2 * math.pi * 90 / 60) ** 2
@@ -139,7 +127,7 @@ def test_example_2_4_bearing_forces_erratum(bank):
     # force on the bearing acts opposite the balancing direction: 6.179 N at 301.4 deg (58.6 deg below A).
     moment = math.hypot(-96 + 250 * math.cos(math.radians(60)), 250 * math.sin(math.radians(60)) - 264)
     assert round(moment, 2) == 55.65
-    at_y = steps(bank, "balancing.bearing_reactions", mA="8 kg", rA="60 mm", mB="10 kg", rB="50 mm",
+    at_y = printed_steps(bank, "balancing.bearing_reactions", mA="8 kg", rA="60 mm", mB="10 kg", rB="50 mm",
                  thetaB="60 deg", mC="6 kg", rC="40 mm", thetaC="270 deg", a="0.2 m", b="0.5 m", c="0.3 m",
                  e="0.3 m", N="90 rpm")
     assert at_y["MY"] * 1e3 == pytest.approx(moment)              # the moment 0.8 R_Y as a magnitude, kg mm m
@@ -160,12 +148,12 @@ def test_example_2_6_inline_engine_forces_and_couples(bank):
     # are no real engine's, so the template draws four cranks 90 deg apart, whose forces balance; the
     # directions of the force and secondary balancing force and couple are asked only of this example's
     # data, and come from `exgen solve --json`.
-    got, warnings = answers(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
+    got, _, warnings = answers(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
     assert got["a"] == pytest.approx(0.374762, rel=1e-5)          # printed 0.37 w^2
     assert polar_is(got["b"], 2.986758, 63.51)                    # printed 2.98 w^2 at 64 deg
     assert got["c"] == pytest.approx(0.347296 / 3, rel=1e-5)      # printed 0.34/3 = 0.113 w^2
     assert got["d"] == pytest.approx(2.147418 / 3, rel=1e-5)      # printed 2.14/3 = 0.713 w^2
-    angles = steps(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
+    angles = printed_steps(bank, "balancing.inline_engine_unbalance", **EXAMPLE_2_6)
     assert degrees_is(angles["theta_Fp"], 227.60)                 # printed: add at 228 deg
     assert degrees_is(angles["theta_Fs"], 300.0)                  # printed: add at 300 deg
     assert degrees_is(angles["theta_Cs"], 196.54)                 # printed: add at 196 deg
@@ -175,7 +163,7 @@ def test_example_2_6_inline_engine_forces_and_couples(bank):
 def test_example_2_7_six_cylinder_is_balanced(bank):
     # Example 2.7: four-stroke, six cylinders, firing 1-3-5-6-4-2: "free of unbalanced primary and
     # secondary force and moment".
-    got, _ = answers(bank, "balancing.inline_engine_firing", firing="1-3-5-6-4-2", strokes="4", m="1 kg",
+    got, _, _ = answers(bank, "balancing.inline_engine_firing", firing="1-3-5-6-4-2", strokes="4", m="1 kg",
                      r="1 m", l="3 m", a="1 m", N="1 rad/s")
     assert [got[k] for k in "abc"] == [0.0, 0.0, 0.0]
     assert got["d"] == "balanced"
@@ -208,7 +196,7 @@ def test_problem_2_4a_is_no_firing_order_the_template_offers(bank):
 def test_example_2_8_three_cylinder_radial(bank):
     # Example 2.8: stroke 120 mm, rod 180 mm, 2 kg, 2000 rpm. Primary direct 3 (m/2) r w^2 = 7895.68 N,
     # reverse free; secondary direct free, reverse 3 (m/2)(2w)^2 r/4n = 2631.89 N.
-    got, _ = answers(bank, "balancing.radial_engine", ncyl="3", S="120 mm", l="180 mm", m="2 kg", N="2000 rpm")
+    got, _, _ = answers(bank, "balancing.radial_engine", ncyl="3", S="120 mm", l="180 mm", m="2 kg", N="2000 rpm")
     assert got["a"] == pytest.approx(7895.68, abs=0.01)
     assert got["b"] == pytest.approx(3 * 2 * 60 / 2)               # 180 kg mm opposite the crank
     assert got["c"] == pytest.approx(2631.89, abs=0.01)
@@ -219,7 +207,7 @@ def test_example_2_8_three_cylinder_radial(bank):
 def test_problem_2_3_radial_primary_by_one_mass_secondary_balanced(bank, cylinders):
     # Problem 2.3 (five cylinders) and 2.4(b) (six): the direct cranks add to N (m/2) r w^2 along the
     # crank, so one rotating mass opposite it balances the primary; every secondary polygon closes.
-    got, _ = answers(bank, "balancing.radial_engine", ncyl=str(cylinders), S="200 mm", l="240 mm",
+    got, _, _ = answers(bank, "balancing.radial_engine", ncyl=str(cylinders), S="200 mm", l="240 mm",
                      m="1.2 kg", N="2000 rpm")
     assert got["a"] == pytest.approx(cylinders * 1.2 / 2 * 0.1 * OMEGA_2000 ** 2)
     assert got["b"] == pytest.approx(cylinders * 1.2 * 100 / 2)
@@ -228,7 +216,7 @@ def test_problem_2_3_radial_primary_by_one_mass_secondary_balanced(bank, cylinde
 
 def test_example_2_9_v_twin(bank):
     # Example 2.9: V angle 60 deg, stroke 140 mm, rod 210 mm, 1.2 kg, 2400 rpm.
-    got, _ = answers(bank, "balancing.v_engine", V="60 deg", S="140 mm", l="210 mm", m="1.2 kg", N="2400 rpm")
+    got, _, _ = answers(bank, "balancing.v_engine", V="60 deg", S="140 mm", l="210 mm", m="1.2 kg", N="2400 rpm")
     assert got["a"] == pytest.approx(5305.9, abs=0.1)              # 2 (m/2) r w^2
     assert got["b"] == pytest.approx(2652.95, abs=0.01)            # 2 (m/2) r w^2 cos 60; printed 2652
     assert got["c"] == pytest.approx(1531.68, abs=0.01)            # 2 (m/2) r w^2 / n cos 30
@@ -237,7 +225,7 @@ def test_example_2_9_v_twin(bank):
 
 def test_problem_2_1_primary_balance_by_inner_cranks(bank):
     # Problem 2.1: A and D 5 kg at 120 deg; AB 0.5, BC 0.75, CD 0.6 m; crank 0.325 m; rod 1.25 m; 1250 rpm.
-    got, _ = answers(bank, "balancing.inline_primary_balance", m_out="5 kg", phi="120 deg", lAB="0.5 m",
+    got, _, _ = answers(bank, "balancing.inline_primary_balance", m_out="5 kg", phi="120 deg", lAB="0.5 m",
                      lBC="0.75 m", lCD="0.6 m", r="0.325 m", l="1.25 m", N="1250 rpm")
     # moments about B (per unit r): -2.5 at 0 + 6.75 at 120 deg; C closes it at l = 0.75 m
     mx, my = -2.5 + 6.75 * math.cos(math.radians(120)), 6.75 * math.sin(math.radians(120))
@@ -275,7 +263,7 @@ def _problem_2_2_by_hand(theta_a_deg):
 def test_problem_2_2_complete_balance_two_masses(bank):
     # Problem 2.2 as its source states it (Khurmi and Gupta; IAS 2004): A is 190 deg from B. D then lies
     # 366.7 mm from A, beyond C, as the order A, B, C, D says.
-    got, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="190 deg", **PROBLEM_2_2)
+    got, _, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="190 deg", **PROBLEM_2_2)
     expected = _problem_2_2_by_hand(190)
     assert [got[k] for k in "abcd"] == pytest.approx(expected)
     assert [round(x, 1) for x in expected] == [252.7, 7.9, 9.7, 366.7]
@@ -285,7 +273,7 @@ def test_problem_2_2_complete_balance_two_masses(bank):
 def test_problem_2_2_as_printed_puts_d_out_of_order(bank):
     # The course text prints 90 deg between B and A. The arithmetic still closes (D at 252.7 deg, 39.97 kg,
     # A 28.93 kg), but D falls 72.6 mm from A, between A and B: the data contradict the order of the planes.
-    got, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="90 deg", **PROBLEM_2_2)
+    got, _, warnings = answers(bank, "balancing.complete_balance_masses", thetaA="90 deg", **PROBLEM_2_2)
     assert [got[k] for k in "abcd"] == pytest.approx(_problem_2_2_by_hand(90))
     assert round(got["d"], 1) == 72.6
     assert warnings == ["plane D does not lie beyond C, as the order A, B, C, D needs",

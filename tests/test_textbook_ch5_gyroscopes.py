@@ -15,16 +15,7 @@ import math
 
 import pytest
 
-from exgen.solve import solve
-
-
-def solved(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return variant, {part: answer.value for part, answer in variant.answers.items()}, warnings
-
-
-def step(variant, name):
-    return variant.step(name).value
+from textbook_helpers import solved, step
 
 
 EXAMPLE_5_1 = dict(I="4 kg*m^2", N="1500 rpm", spin="same", K="20 kN/m", l="30 cm", v="60 km/h", R="30 m",

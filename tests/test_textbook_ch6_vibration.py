@@ -14,16 +14,7 @@ import math
 
 import pytest
 
-from exgen.solve import solve
-
-
-def solved(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return variant, {part: answer.value for part, answer in variant.answers.items()}, warnings
-
-
-def step(variant, name):
-    return variant.step(name).value
+from textbook_helpers import solved, step
 
 
 def test_example_6_1_lever_by_the_equivalent_method(bank):

@@ -18,18 +18,14 @@ import math
 import pytest
 
 from exgen.solve import solve
+from textbook_helpers import answers_and_steps
+
 
 deg, rad = math.degrees, math.radians
 
 
-def answers(bank, template_id, **given):
-    variant, warnings = solve(bank.get(template_id), {k: str(v) for k, v in given.items()})
-    return ({part: answer.value for part, answer in variant.answers.items()},
-            {s.name: s.value for s in variant.steps}, warnings)
-
-
 def test_four_bar_example_analytical_method(bank):
-    got, steps, warnings = answers(bank, "linkages.fourbar_position", L1="14 inch", L2="8 inch", L3="16 inch",
+    got, steps, warnings = answers_and_steps(bank, "linkages.fourbar_position", L1="14 inch", L2="8 inch", L3="16 inch",
                                    L4="10 inch", theta2="75 deg", circuit="1")
     assert got["a"] == pytest.approx(14.2135 * 25.4, abs=5e-5 * 25.4)      # BE = 14.2135
     assert got["b"] == pytest.approx(61.2377, abs=5e-4)                    # γ (exactly 61.23794°)
@@ -41,7 +37,7 @@ def test_four_bar_example_analytical_method(bank):
 
 
 def test_four_bar_example_vector_method_and_point_c(bank):
-    got, steps, warnings = answers(bank, "linkages.coupler_point", xA="0 inch", yA="14 inch", L2="8 inch",
+    got, steps, warnings = answers_and_steps(bank, "linkages.coupler_point", xA="0 inch", yA="14 inch", L2="8 inch",
                                    L3="16 inch", L4="10 inch", theta2="195 deg", circuit="2", CP="14 inch",
                                    BP="28 inch", side="right")
     inch = 0.0254
@@ -64,7 +60,7 @@ def test_four_bar_example_vector_method_and_point_c(bank):
 
 def test_slider_crank_example(bank):
     """§7.10: A at (2, 1) from O, crank 0.5 at 75°, coupler 1.75, slide vertical 1 right of A, P 2 below C."""
-    got, steps, warnings = answers(bank, "linkages.slider_crank", slider="below", L1="1 inch", L2="0.5 inch",
+    got, steps, warnings = answers_and_steps(bank, "linkages.slider_crank", slider="below", L1="1 inch", L2="0.5 inch",
                                    L3="1.75 inch", theta2="75 deg", xA="2 inch", yA="1 inch", tip="2 inch")
     assert deg(steps["theta3"]) == pytest.approx(60.17, abs=5e-3)          # eq 7.13
     assert got["a"] == pytest.approx(-60.17, abs=5e-3)                     # the vector method's -60.16°
@@ -77,7 +73,7 @@ def test_slider_crank_example(bank):
 
 def test_horizontal_offset_slider_crank_turned_35_degrees_clockwise(bank):
     """Problem 7.1's form: an offset crank turned 35° clockwise (θ2 = 325°), eqs 7.10-7.12 by hand."""
-    got, steps, _ = answers(bank, "linkages.slider_crank", slider="right", L1="20 mm", L2="50 mm", L3="180 mm",
+    got, steps, _ = answers_and_steps(bank, "linkages.slider_crank", slider="right", L1="20 mm", L2="50 mm", L3="180 mm",
                             theta2="325 deg", xA="0 mm", yA="0 mm", tip="60 mm")
     theta2 = rad(-35)
     theta3 = math.asin((20 + 50 * math.sin(theta2)) / 180)
@@ -91,7 +87,7 @@ def test_horizontal_offset_slider_crank_turned_35_degrees_clockwise(bank):
 
 
 def test_slider_on_the_other_branch(bank):
-    got, _, _ = answers(bank, "linkages.slider_crank", slider="left", L1="0 mm", L2="50 mm", L3="180 mm",
+    got, _, _ = answers_and_steps(bank, "linkages.slider_crank", slider="left", L1="0 mm", L2="50 mm", L3="180 mm",
                         theta2="60 deg", xA="100 mm", yA="50 mm", tip="40 mm")
     theta3 = math.asin(50 * math.sin(rad(60)) / 180)
     assert got["a"] % 360 == pytest.approx(180 + deg(theta3))    # down to the left
@@ -109,7 +105,7 @@ def test_slider_on_the_other_branch(bank):
 ])
 def test_grashof_table_7_1(bank, lengths, ground, kind):
     da, ab, bc, cd = lengths
-    got, steps, _ = answers(bank, "linkages.grashof", AB=f"{ab} mm", BC=f"{bc} mm", CD=f"{cd} mm",
+    got, steps, _ = answers_and_steps(bank, "linkages.grashof", AB=f"{ab} mm", BC=f"{bc} mm", CD=f"{cd} mm",
                             DA=f"{da} mm", ground=ground)
     assert got["a"] == min(lengths) + max(lengths)
     assert got["b"] == sum(lengths) - min(lengths) - max(lengths)
@@ -117,7 +113,7 @@ def test_grashof_table_7_1(bank, lengths, ground, kind):
 
 
 def test_crank_rocker_limit_positions(bank):
-    got, _, _ = answers(bank, "linkages.rocker_swing", L1="70 mm", L2="20 mm", L3="80 mm", L4="50 mm")
+    got, _, _ = answers_and_steps(bank, "linkages.rocker_swing", L1="70 mm", L2="20 mm", L3="80 mm", L4="50 mm")
     ext = 180 - deg(math.acos((70 ** 2 + 50 ** 2 - 100 ** 2) / (2 * 70 * 50)))
     fold = 180 - deg(math.acos((70 ** 2 + 50 ** 2 - 60 ** 2) / (2 * 70 * 50)))
     assert (got["a"], got["b"], got["c"]) == pytest.approx((ext, fold, abs(ext - fold)))
@@ -125,7 +121,7 @@ def test_crank_rocker_limit_positions(bank):
 
 def test_support_link_retracted_by_its_actuator(bank):
     """Problem 7.2's form: A at the origin, O at (400, -100) mm, B 300 mm up the link, 600 -> 400 mm."""
-    got, _, _ = answers(bank, "linkages.actuator_swing", xO="400 mm", yO="-100 mm", r="300 mm", s1="600 mm",
+    got, _, _ = answers_and_steps(bank, "linkages.actuator_swing", xO="400 mm", yO="-100 mm", r="300 mm", s1="600 mm",
                         s2="400 mm", side="left")
     ao = math.hypot(400, -100)
     beta = math.atan2(-100, 400)
@@ -138,7 +134,7 @@ def test_support_link_retracted_by_its_actuator(bank):
 
 
 def test_two_position_synthesis_pivots_on_the_floor(bank):
-    got, steps, _ = answers(bank, "linkages.two_position_synthesis", b="200 mm", xM1="-300 mm", yM1="300 mm",
+    got, steps, _ = answers_and_steps(bank, "linkages.two_position_synthesis", b="200 mm", xM1="-300 mm", yM1="300 mm",
                             phi1="30 deg", xM2="100 mm", yM2="450 mm", phi2="-20 deg")
     m1, m2 = (-300, 300), (100, 450)
     n1 = (m1[0] + 200 * math.cos(rad(30)), m1[1] + 200 * math.sin(rad(30)))
