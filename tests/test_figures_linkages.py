@@ -4,8 +4,8 @@ import math
 import pytest
 
 from exgen.figures.linkages import coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction
+from exgen.figures.linkage_poses import joints
 from exgen.figures.mechanisms import kinematic_diagram
-from exgen.mechanics import linkages as lk
 from exgen.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
 
@@ -22,8 +22,8 @@ def test_four_bar_is_drawn_to_scale_in_its_circuit(bank, theta2, circuit):
     assert len(found) == 4
     # the four pins are A, B, C, D: their six distances are the links and diagonals, to one scale
     drawn = sorted(math.dist(p, q) for i, p in enumerate(found) for q in found[i + 1:])
-    joints = lk.joints(0.25, 0.08, 0.26, 0.18, math.radians(theta2), int(circuit))
-    expected = sorted(math.dist(joints[p], joints[q]) for p, q in ("AB", "BC", "CD", "DA", "AC", "BD"))
+    places = joints(0.25, 0.08, 0.26, 0.18, math.radians(theta2), int(circuit))
+    expected = sorted(math.dist(places[p], places[q]) for p, q in ("AB", "BC", "CD", "DA", "AC", "BD"))
     assert expected[:4] != drawn[:4]
     scale = drawn[-1] / expected[-1]
     assert [x / scale for x in drawn] == pytest.approx(expected, rel=2e-3)

@@ -19,6 +19,7 @@ pytest.importorskip("pylinkage")
 from pylinkage import Crank, Ground, RRPDyad, RRRDyad, UnbuildableError  # noqa: E402
 from pylinkage.linkage.transmission import compute_transmission_angle  # noqa: E402
 
+from exgen.figures.linkage_poses import joints, pose  # noqa: E402
 from exgen.mechanics import linkages as lk  # noqa: E402
 from exgen.mechanics.slider_cranks import BRANCHES, slider_crank  # noqa: E402
 
@@ -71,12 +72,12 @@ def test_four_bar_positions_agree_with_pylinkage_in_both_circuits():
             if theirs is None:
                 assert not lk.can_assemble(ground, crank, coupler, rocker, local)
                 with pytest.raises(lk.NotAssemblable):
-                    lk.fourbar(ground, crank, coupler, rocker, local, circuit)
+                    pose(ground, crank, coupler, rocker, local, circuit)
                 refused += 1
                 continue
             b, c, d = theirs
-            ours = lk.joints(ground, crank, coupler, rocker, theta2, circuit, origin, theta1)
-            pos = lk.fourbar(ground, crank, coupler, rocker, local, circuit)
+            ours = joints(ground, crank, coupler, rocker, theta2, circuit, origin, theta1)
+            pos = pose(ground, crank, coupler, rocker, local, circuit)
             worst = max(worst, math.dist(ours["C"], c), math.dist(ours["B"], b),
                         _angle_gap(pos.theta3 + theta1, math.atan2(c[1] - b[1], c[0] - b[0])),
                         _angle_gap(pos.theta4 + theta1, math.atan2(c[1] - d[1], c[0] - d[0])),

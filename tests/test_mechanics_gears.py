@@ -38,7 +38,7 @@ def test_the_fixed_member_must_be_a_gear():
 
 @pytest.mark.parametrize("module, teeth, pd", [(0.002, 30, 1 / 0.002), (0.0254 / 12, 12, 12 / 0.0254)])
 def test_module_and_diametral_pitch_are_reciprocal(module, teeth, pd):
-    assert mg.module_of(pd) == pytest.approx(module)
+    assert mg.diametral_pitch(module) == pytest.approx(pd)
     assert mg.pitch_diameter(teeth, module) == pytest.approx(mg.pitch_diameter_dp(teeth, pd))
     assert mg.circular_pitch(module) == pytest.approx(math.pi * mg.pitch_diameter(teeth, module) / teeth)
 

@@ -8,7 +8,12 @@ import math
 import pytest
 
 from exgen.mechanics import governors as gv
-from exgen.mechanics.flywheels import omega
+
+
+def omega(rpm: float) -> float:
+    """rad/s from rpm: ω = 2πN/60."""
+    return 2 * math.pi * rpm / 60
+
 
 G = gv.G
 

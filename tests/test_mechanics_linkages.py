@@ -1,4 +1,4 @@
-"""Linkage physics (exgen.mechanics.linkages, slider_cranks) against the course text's chapter 7.
+"""Linkage physics (exgen.mechanics.linkages, slider_cranks; whole positions as the figures compose them) against the course text's chapter 7.
 
 Printed values come from the four-bar example (§7.9) and the slider-crank example (§7.10).
 Erratum: the four-bar example's analytical method prints θ3 = 6.14°; eq 7.5 with its own
@@ -8,10 +8,20 @@ import math
 
 import pytest
 
+from exgen.figures.linkage_poses import joints, pose
 from exgen.mechanics import linkages as lk
 from exgen.mechanics.slider_cranks import slider_crank
 
 deg, rad = math.degrees, math.radians
+
+
+def is_crossed(points) -> bool:
+    """Whether the loop A-B-C-D crosses itself (the crossed configuration), else it is open."""
+    def cross(p1, p2, q1, q2):
+        return lk.side(p1, p2, q1) * lk.side(p1, p2, q2) < 0 and lk.side(q1, q2, p1) * lk.side(q1, q2, p2) < 0
+
+    a, b, c, d = (points[k] for k in "ABCD")
+    return cross(a, b, c, d) or cross(b, c, d, a)
 
 
 def close_loop(ground, crank, coupler, rocker, theta2, pos):
@@ -22,7 +32,7 @@ def close_loop(ground, crank, coupler, rocker, theta2, pos):
 
 
 def test_four_bar_example_analytical_method():
-    pos = lk.fourbar(14, 8, 16, 10, rad(75), circuit=1)
+    pos = pose(14, 8, 16, 10, rad(75), circuit=1)
     assert pos.bd == pytest.approx(14.2135, abs=5e-5)            # printed BE = 14.2135
     # printed γ = 61.2377°: the exact 61.23794° rounds to 61.2379 (a slip in the fourth decimal)
     assert deg(pos.gamma) == pytest.approx(61.2377, abs=5e-4)
@@ -35,7 +45,7 @@ def test_four_bar_example_analytical_method():
 
 def test_four_bar_example_vector_method_in_its_own_frame():
     """The suspension of Figure 7.28: E (rocker pivot) at the origin, A 14 above it, θ2 = 195°."""
-    points = lk.joints(14, 8, 16, 10, rad(195), circuit=2, origin=(0, 14), theta1=rad(-90))
+    points = joints(14, 8, 16, 10, rad(195), circuit=2, origin=(0, 14), theta1=rad(-90))
     b, c, d = points["B"], points["C"], points["D"]
     assert d == pytest.approx((0, 0), abs=1e-12)
     # the text's R3 runs from its D (our C) to B: θ3 = 84.87°; its θ4 = 203.65° (203.62° in Fig 7.32)
@@ -49,20 +59,20 @@ def test_four_bar_example_vector_method_in_its_own_frame():
 
 
 def test_the_example_is_circuit_2_in_its_own_frame_and_circuit_1_mirrored():
-    points = lk.joints(14, 8, 16, 10, rad(195), circuit=2, origin=(0, 14), theta1=rad(-90))
+    points = joints(14, 8, 16, 10, rad(195), circuit=2, origin=(0, 14), theta1=rad(-90))
     assert lk.side(points["B"], points["D"], points["C"]) < 0    # C on the right of B -> D
-    standard = lk.joints(14, 8, 16, 10, rad(75), circuit=1)
+    standard = joints(14, 8, 16, 10, rad(75), circuit=1)
     assert lk.side(standard["B"], standard["D"], standard["C"]) > 0
-    assert not lk.is_crossed(points) and not lk.is_crossed(standard)
+    assert not is_crossed(points) and not is_crossed(standard)
 
 
 @pytest.mark.parametrize("theta2", range(-175, 180, 10))
 @pytest.mark.parametrize("circuit", lk.CIRCUITS)
 def test_circuits_close_the_loop_on_their_own_side_of_bd(theta2, circuit):
     ground, crank, coupler, rocker = 7.0, 2.0, 8.0, 5.0   # a crank-rocker: assembles at every θ2
-    pos = lk.fourbar(ground, crank, coupler, rocker, rad(theta2), circuit)
+    pos = pose(ground, crank, coupler, rocker, rad(theta2), circuit)
     assert close_loop(ground, crank, coupler, rocker, rad(theta2), pos) < 1e-9
-    points = lk.joints(ground, crank, coupler, rocker, rad(theta2), circuit)
+    points = joints(ground, crank, coupler, rocker, rad(theta2), circuit)
     assert (lk.side(points["B"], points["D"], points["C"]) > 0) == (circuit == 1)
     turn = lk.wrap(pos.theta4 - pos.theta3)
     assert turn == pytest.approx(pos.gamma if circuit == 1 else -pos.gamma)
@@ -70,7 +80,7 @@ def test_circuits_close_the_loop_on_their_own_side_of_bd(theta2, circuit):
 
 @pytest.mark.parametrize("theta2", range(5, 360, 10))
 def test_the_two_circuits_are_mirror_images_across_bd(theta2):
-    one, two = (lk.joints(7, 2, 8, 5, rad(theta2), circuit) for circuit in lk.CIRCUITS)
+    one, two = (joints(7, 2, 8, 5, rad(theta2), circuit) for circuit in lk.CIRCUITS)
     b, d, c1, c2 = one["B"], one["D"], one["C"], two["C"]
     assert math.dist(b, c1) == pytest.approx(math.dist(b, c2)) and math.dist(d, c1) == pytest.approx(math.dist(d, c2))
     assert lk.side(b, d, c1) == pytest.approx(-lk.side(b, d, c2))
@@ -78,22 +88,22 @@ def test_the_two_circuits_are_mirror_images_across_bd(theta2):
 
 def test_circuit_1_is_the_open_configuration_while_the_crank_is_above_the_ground_line():
     for theta2 in range(5, 180, 10):
-        assert not lk.is_crossed(lk.joints(7, 2, 8, 5, rad(theta2), 1))
-    assert lk.is_crossed(lk.joints(7, 2, 8, 5, rad(45), 2))
+        assert not is_crossed(joints(7, 2, 8, 5, rad(theta2), 1))
+    assert is_crossed(joints(7, 2, 8, 5, rad(45), 2))
 
 
 def test_a_linkage_that_cannot_reach_does_not_assemble():
     # a triple rocker: at θ2 = 180° BD = L1 + L2 = 12 > L3 + L4 = 11
     assert not lk.can_assemble(8, 4, 6, 5, math.pi)
     with pytest.raises(lk.NotAssemblable, match="cannot span"):
-        lk.fourbar(8, 4, 6, 5, math.pi)
+        pose(8, 4, 6, 5, math.pi)
     with pytest.raises(ValueError, match="circuit"):
-        lk.fourbar(7, 2, 8, 5, 0.3, circuit=3)
+        pose(7, 2, 8, 5, 0.3, circuit=3)
 
 
 def test_half_angle_form_survives_its_indeterminate_case():
     # a parallelogram at θ2 = 90°, circuit 2: numerator and denominator of eq 7.7 both vanish
-    pos = lk.fourbar(4, 3, 4, 3, rad(90), circuit=2)
+    pos = pose(4, 3, 4, 3, rad(90), circuit=2)
     assert close_loop(4, 3, 4, 3, rad(90), pos) < 1e-9
 
 
@@ -120,10 +130,10 @@ def test_limit_positions_of_a_crank_rocker():
         c = lk.polar((7, 0), 5, theta4)
         assert math.dist(b, c) == pytest.approx(8)                       # the coupler fits
         assert math.dist((0, 0), c) == pytest.approx(reach)              # A, B, C in line
-        pos = lk.fourbar(7, 2, 8, 5, theta2, 1)
+        pos = pose(7, 2, 8, 5, theta2, 1)
         assert lk.wrap(pos.theta4 - theta4) == pytest.approx(0, abs=1e-6)
     # the rocker never passes its limits: sample the whole turn of the crank
-    theta4s = [lk.fourbar(7, 2, 8, 5, rad(t / 4), 1).theta4 for t in range(1440)]
+    theta4s = [pose(7, 2, 8, 5, rad(t / 4), 1).theta4 for t in range(1440)]
     low, high = sorted((limits.theta4_extended, limits.theta4_folded))
     assert min(theta4s) == pytest.approx(low, abs=1e-5) and max(theta4s) == pytest.approx(high, abs=1e-5)
     assert limits.swing == pytest.approx(high - low)

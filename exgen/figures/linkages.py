@@ -13,6 +13,7 @@ import math
 from ..mechanics import linkages as lk
 from ..mechanics.slider_cranks import slider_crank as solve_slider
 from .kinematic import DASH, Sketch, centre_of, fit
+from .linkage_poses import joints, pose
 from .svg import NOTE_SIZE, unit
 
 SUBSCRIPT = dict(zip("1234", "₁₂₃₄"))
@@ -73,8 +74,8 @@ def _fourbar_figure(variant, key: bool) -> str:
     lengths = [_si(variant, f"L{i}") for i in range(1, 5)]
     theta2 = _si(variant, "theta2")
     circuit = int(_word(variant, "circuit"))
-    points = lk.joints(*lengths, theta2, circuit)
-    other = lk.joints(*lengths, theta2, 3 - circuit)["C"] if key else None
+    points = joints(*lengths, theta2, circuit)
+    other = joints(*lengths, theta2, 3 - circuit)["C"] if key else None
     frame = fit(list(points.values()) + ([other] if other else []), 380, 250)
     page = {k: frame(v) for k, v in points.items()}
     s = Sketch()
@@ -148,7 +149,7 @@ def grashof_links(variant) -> str:
     order = [NAMES[(at + k) % 4] for k in range(4)]          # ground, then round the loop
     lengths = [_si(variant, n) for n in order]
     theta2 = _clearest_pose(*lengths)
-    points = lk.joints(*lengths, theta2, 1)
+    points = joints(*lengths, theta2, 1)
     frame = fit(list(points.values()), 360, 230)
     page = {k: frame(v) for k, v in points.items()}
     s = Sketch()
@@ -164,7 +165,7 @@ def _clearest_pose(ground: float, crank: float, coupler: float, rocker: float) -
     for degrees in range(5, 360, 5):
         theta2 = math.radians(degrees)
         if lk.can_assemble(ground, crank, coupler, rocker, theta2):
-            gap = abs(lk.fourbar(ground, crank, coupler, rocker, theta2).gamma - math.pi / 2) + 0.2 * abs(theta2 - 1.2)
+            gap = abs(pose(ground, crank, coupler, rocker, theta2).gamma - math.pi / 2) + 0.2 * abs(theta2 - 1.2)
             if gap < best_gap:
                 best, best_gap = theta2, gap
     return best
@@ -226,8 +227,8 @@ def _rocker_figure(variant, key: bool) -> str:
     lengths = [_si(variant, f"L{i}") for i in range(1, 5)]
     limits = lk.rocker_limits(*lengths)
     drawn_at = _clearest_pose(*lengths)
-    points = lk.joints(*lengths, drawn_at, 1)
-    extremes = [lk.joints(*lengths, t, 1) for t in (limits.theta2_extended, limits.theta2_folded)]
+    points = joints(*lengths, drawn_at, 1)
+    extremes = [joints(*lengths, t, 1) for t in (limits.theta2_extended, limits.theta2_folded)]
     frame = fit(list(points.values()) + [e[k] for e in extremes for k in "BC"], 380, 250)
     page = {k: frame(v) for k, v in points.items()}
     s = Sketch()

@@ -40,17 +40,6 @@ def balancing_vector(vectors: Iterable[tuple[float, float]]) -> tuple[float, flo
     return polar(-x, -y)
 
 
-def moments(masses: Iterable[tuple[float, float, float, float]]) -> list[tuple[float, float]]:
-    """(m, r, l, θ) per plane -> the m·r·l moment vectors (magnitude, θ); a negative l stays signed
-    in the magnitude, which is the same as the vector half a turn round."""
-    return [(m * r * l, angle) for m, r, l, angle in masses]
-
-
-def along(size: float, direction: float) -> tuple[float, float]:
-    """A signed size along a direction, as (magnitude >= 0, angle in [0, 2π))."""
-    return polar(*components(size, direction))
-
-
 def two_directions(target: Vector, a1: float, a2: float) -> tuple[float, float]:
     """The signed sizes (s1, s2) with s1 ∠a1 + s2 ∠a2 = target (Cramer's rule).
 

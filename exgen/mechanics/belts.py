@@ -34,9 +34,10 @@ def contact_angle_open(r1: float, r2: float, centre_distance: float) -> float:
     return math.pi - 2.0 * alpha_open(r1, r2, centre_distance)
 
 
-def contact_angle_open_large(r1: float, r2: float, centre_distance: float) -> float:
-    """Angle of contact on the larger pulley of an open drive, pi + 2 alpha."""
-    return math.pi + 2.0 * alpha_open(r1, r2, centre_distance)
+def contact_angle_open_large(theta_small: float) -> float:
+    """Angle of contact on the larger pulley of an open drive from the smaller's: the two wraps make a
+    full turn, 2 pi - theta (= pi + 2 alpha)."""
+    return 2.0 * math.pi - theta_small
 
 
 def contact_angle_crossed(r1: float, r2: float, centre_distance: float) -> float:

@@ -11,7 +11,7 @@ of speed: the *total* band, so "within ±0.5 % of the mean speed" is C_s = 0.01.
 
 The fluctuation of energy comes from a turning-moment diagram: as loops of measured area
 (Example 3.1), as a piecewise-linear torque against time or angle (Example 3.2), or as
-an equation in the crank angle (Problems 3.2, 3.5, `analytic.py`'s closed-form integral).
+an equation in the crank angle (Problems 3.2, 3.5, `turning_moment.py`'s closed-form integral).
 """
 from __future__ import annotations
 
@@ -20,11 +20,6 @@ from typing import Sequence
 
 #: Below this fraction of the largest loop, a cumulative energy is taken as exactly zero.
 ZERO = 1e-12
-
-
-def omega(rpm: float) -> float:
-    """rpm to rad/s: ω = 2πN/60."""
-    return 2.0 * math.pi * rpm / 60.0
 
 
 def energy_per_area(torque_scale: float, angle_scale: float) -> float:
@@ -66,11 +61,6 @@ def fluctuation_from_areas(signed_areas: Sequence[float]) -> tuple[float, int, i
     return levels[high] - levels[low], high, low
 
 
-def fluctuation_of_energy(inertia: float, mean_omega: float, cs: float) -> float:
-    """ΔE = I ω² C_s (eq 3.5)."""
-    return inertia * mean_omega ** 2 * cs
-
-
 def coefficient_of_fluctuation(delta_e: float, inertia: float, mean_omega: float) -> float:
     """C_s = ΔE / (I ω²) (eq 3.5 solved for C_s)."""
     return delta_e / (inertia * mean_omega ** 2)
@@ -81,21 +71,19 @@ def inertia_for(delta_e: float, mean_omega: float, cs: float) -> float:
     return delta_e / (mean_omega ** 2 * cs)
 
 
-def extreme_speeds(mean_omega: float, cs: float) -> tuple[float, float]:
-    """(ω₁, ω₂) = ω (1 ± C_s/2): the band is centred on the mean speed (eqs 3.2, 3.4)."""
-    return mean_omega * (1.0 + cs / 2.0), mean_omega * (1.0 - cs / 2.0)
-
-
 def rim_mass(inertia: float, mean_radius: float) -> float:
     """Mass of a rim whose inertia is I, all of it at the mean radius (arms neglected): m = I / R²."""
     return inertia / mean_radius ** 2
 
 
-def rim_section(mass: float, density: float, mean_radius: float, width_per_thickness: float) -> tuple[float, float]:
-    """(thickness, width) of a rectangular rim section: m = ρ · 2πR · b t with b = k t."""
-    area = mass / (density * 2.0 * math.pi * mean_radius)
-    thickness = math.sqrt(area / width_per_thickness)
-    return thickness, width_per_thickness * thickness
+def rim_area(mass: float, density: float, mean_radius: float) -> float:
+    """Cross-section of a rim of this mass: m = ρ · 2πR · A."""
+    return mass / (density * 2.0 * math.pi * mean_radius)
+
+
+def rim_thickness(area: float, width_per_thickness: float) -> float:
+    """Thickness t of a rectangular section of this area whose width is b = k t: A = k t²."""
+    return math.sqrt(area / width_per_thickness)
 
 
 # ---- a torque given as a closed polyline over one period (against time or angle) -------------
@@ -120,17 +108,15 @@ def level_crossings(points: Sequence[tuple[float, float]], level: float) -> list
     return out
 
 
-def polyline_swing(points: Sequence[tuple[float, float]], level: float) -> float:
-    """Greatest minus least of the running integral of (y − level): the fluctuation of energy
-    when y is the torque a machine needs and `level` the constant torque that drives it
-    (in N·m·s against time; multiply by ω for joules)."""
-    running, best, worst = 0.0, 0.0, 0.0
-    xs = sorted({x for x, _ in points} | set(level_crossings(points, level)))
-    heights = [_height(points, x) for x in xs]
-    for (x0, y0), (x1, y1) in zip(zip(xs, heights), zip(xs[1:], heights[1:])):
-        running += (x1 - x0) * ((y0 + y1) / 2.0 - level)
-        best, worst = max(best, running), min(worst, running)
-    return best - worst
+def area_above(points: Sequence[tuple[float, float]], level: float) -> float:
+    """∫ (y − level) dx where the polyline lies above `level`: the energy a flywheel gives up while the
+    machine needs more than the constant torque `level` that drives it (in N·m·s against time; times ω
+    for joules). The text's ΔE when the torque rises above its mean once a cycle (Example 3.2)."""
+    crossings = set(level_crossings(points, level))
+    xs = sorted({x for x, _ in points} | crossings)
+    heights = [0.0 if x in crossings else _height(points, x) - level for x in xs]
+    return sum((x1 - x0) * (y0 + y1) / 2.0 for x0, x1, y0, y1 in zip(xs, xs[1:], heights, heights[1:])
+               if y0 >= 0 and y1 >= 0)
 
 
 def _height(points: Sequence[tuple[float, float]], x: float) -> float:

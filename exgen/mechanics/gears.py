@@ -29,9 +29,9 @@ def circular_pitch(module: float) -> float:
     return math.pi * module
 
 
-def module_of(diametral_pitch: float) -> float:
-    """m = 1 / P_d (SI); 25.4 / P_d in mm for P_d in teeth per inch."""
-    return 1.0 / diametral_pitch
+def diametral_pitch(module: float) -> float:
+    """P_d = 1 / m (SI): teeth per metre of pitch diameter; 25.4 / m[mm] teeth per inch."""
+    return 1.0 / module
 
 
 def centre_distance(d1: float, d2: float, internal: bool = False) -> float:

@@ -90,11 +90,6 @@ def reactive_couple(spin: Vector, precession: Vector, magnitude: float = 1.0) ->
     return scale(cross(spin, precession), magnitude)
 
 
-def active_couple(spin: Vector, precession: Vector, magnitude: float = 1.0) -> Vector:
-    """The couple applied to the rotor to turn its axis, Ω × H (the reverse of the reactive one)."""
-    return scale(cross(precession, spin), magnitude)
-
-
 TOLERANCE = 1e-12
 
 
@@ -144,28 +139,32 @@ def centrifugal_force(mass: float, speed: float, radius: float) -> float:
     return mass * speed ** 2 / radius
 
 
-def heel_angle(mass: float, height: float, speed: float, radius: float, spin_momentum: float,
-               g: float = G) -> float:
-    """Angle of heel (from the vertical) of a two-wheeler on a curve, radians.
+def heel_angle(gyroscopic: float, centrifugal: float, mass: float, height: float, g: float = G) -> float:
+    """Angle of heel (from the vertical) of a two-wheeler on a curve, radians, from the couples it makes
+    upright: the gyroscopic Σ(I ω)·v/R of wheels and engine and the centrifugal m v²/R · h, both
+    overturning outwards (a gyroscopic couple against them is negative).
 
-    Leaning by θ, the weight's moment m g h sin θ about the tyre contacts balances the centrifugal
-    couple m v²/R · h cos θ and the gyroscopic couple Σ(I ω) · v/R · cos θ of wheels and engine
-    (both overturn outwards); `spin_momentum` is Σ I ω, signed (an engine turning against the wheels
-    counts negative). tan θ = (Σ I ω · v/R + m v² h / R) / (m g h)  (Example 5.2).
+    Leaning by θ, both couples scale with cos θ and the weight rights the machine with m g h sin θ:
+    tan θ = (C_g + C_c) / (m g h)  (Example 5.2).
     """
-    overturning = spin_momentum * speed / radius + mass * speed ** 2 / radius * height
-    return math.atan2(overturning, mass * g * height)
+    return math.atan2(gyroscopic + centrifugal, mass * g * height)
 
 
-def rail_limiting_speed(mass: float, height: float, gauge: float, radius: float, wheel_radius: float,
-                        spin_inertia: float, g: float = G) -> float:
-    """Speed at which the inner wheels of a four-wheeled car (two axles) just leave the rail.
+def centrifugal_couple_per_v2(mass: float, height: float, radius: float) -> float:
+    """The centrifugal couple m v² h / R on a vehicle on a curve, per v²."""
+    return mass * height / radius
 
-    Centrifugal couple m v² h / R and gyroscopic couple Σ(I G) (v/r)(v/R) both scale with v²;
-    `spin_inertia` is Σ I·(speed ratio), signed, positive when it overturns outwards like the
-    wheels themselves. Each inner wheel carries m g / 4 and loses (couple)/(2 × gauge).
-    """
-    per_v2 = mass * height / radius + spin_inertia / (wheel_radius * radius)
-    if per_v2 <= 0:
+
+def gyroscopic_couple_per_v2(spin_inertia: float, wheel_radius: float, radius: float) -> float:
+    """The gyroscopic couple Σ(I G)·(v/r)·(v/R) of rotors turning G times as fast as wheels of radius r,
+    per v²; `spin_inertia` is Σ I·G, signed, positive when it overturns outwards like the wheels."""
+    return spin_inertia / (wheel_radius * radius)
+
+
+def rail_limiting_speed(mass: float, gauge: float, couple_per_v2: float, g: float = G) -> float:
+    """Speed at which the inner wheels of a four-wheeled rail car (two axles) just leave the rail: the
+    overturning couples are `couple_per_v2` · v², and each inner wheel, carrying m g / 4, loses
+    (couple)/(2 × gauge)."""
+    if couple_per_v2 <= 0:
         raise ValueError("the couples do not overturn the car outwards: no wheel ever leaves the rail")
-    return math.sqrt(mass * g * gauge / 2 / per_v2)
+    return math.sqrt(mass * g * gauge / 2 / couple_per_v2)

@@ -7,7 +7,9 @@ CD = L4, ground AD = L1; BD is the diagonal and γ the transmission angle at C.
 
 The circuit is the text's: in circuit 1 (eqs 7.5-7.6) θ4 = θ3 + γ, so C lies on the left of
 the diagonal BD seen from B; in circuit 2 (eqs 7.7-7.8) θ4 = θ3 − γ and C lies on its right.
-A linkage that cannot close at the asked crank angle raises NotAssemblable.
+A linkage that cannot close at the asked crank angle raises NotAssemblable. The solvers work a
+position step by step from these equations (so that a student's BD or γ carries forward); the figures
+compose them into whole positions (exgen.figures.linkage_poses).
 """
 from __future__ import annotations
 
@@ -85,16 +87,6 @@ def grashof_kind(s_plus_l: float, p_plus_q: float, shortest: str) -> str:
 
 # ---- four-bar position (§7.6, eqs 7.3-7.8) ------------------------------------------------
 
-@dataclass(frozen=True)
-class FourBar:
-    """The position of a four-bar at one crank angle: the text's BD, γ, θ3, θ4."""
-
-    bd: float
-    gamma: float
-    theta3: float
-    theta4: float
-
-
 def diagonal(ground: float, crank: float, theta2: float) -> float:
     """BD = sqrt(L1² + L2² - 2 L1 L2 cos θ2) (eq 7.3)."""
     return math.sqrt(max(0.0, ground ** 2 + crank ** 2 - 2 * ground * crank * math.cos(theta2)))
@@ -116,15 +108,6 @@ def _half_angle(numerator: float, denominator: float, fallback: complex) -> floa
     if math.hypot(numerator, denominator) < 1e-12 * (abs(fallback) or 1.0):
         return wrap(cmath.phase(fallback))
     return wrap(2 * math.atan2(numerator, denominator))
-
-
-def fourbar(ground: float, crank: float, coupler: float, rocker: float, theta2: float,
-            circuit: int = 1) -> FourBar:
-    """BD, γ, θ3 and θ4 by the text's equations: circuit 1 by 7.5-7.6, circuit 2 by 7.7-7.8."""
-    bd = diagonal(ground, crank, theta2)
-    gamma = transmission_angle(coupler, rocker, bd)
-    return FourBar(bd, gamma, coupler_angle(ground, crank, coupler, rocker, theta2, gamma, circuit),
-                   rocker_angle(ground, crank, coupler, rocker, theta2, gamma, circuit))
 
 
 def _sign(circuit: int) -> float:
@@ -163,40 +146,14 @@ def can_assemble(ground: float, crank: float, coupler: float, rocker: float, the
     return abs(coupler - rocker) <= bd <= coupler + rocker
 
 
-def rotate(point: tuple[float, float], angle: float) -> tuple[float, float]:
-    c, s = math.cos(angle), math.sin(angle)
-    return point[0] * c - point[1] * s, point[0] * s + point[1] * c
-
-
 def polar(origin: tuple[float, float], length: float, angle: float) -> tuple[float, float]:
     """The point `length` from `origin` in the direction `angle` (eq 7.9)."""
     return origin[0] + length * math.cos(angle), origin[1] + length * math.sin(angle)
 
 
-def joints(ground: float, crank: float, coupler: float, rocker: float, theta2: float, circuit: int = 1,
-           origin: tuple[float, float] = (0.0, 0.0), theta1: float = 0.0) -> dict[str, tuple[float, float]]:
-    """A, B, C, D with A at `origin` and the ground line AD at `theta1`; θ2 is absolute (from +x)."""
-    pos = fourbar(ground, crank, coupler, rocker, theta2 - theta1, circuit)
-    a = origin
-    b = polar(a, crank, theta2)
-    d = polar(a, ground, theta1)
-    c = polar(b, coupler, pos.theta3 + theta1)
-    return {"A": a, "B": b, "C": c, "D": d}
-
-
 def side(a, b, point) -> float:
     """> 0 when `point` lies on the left of the line a -> b, < 0 on its right."""
     return (b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0])
-
-
-def _segments_cross(p1, p2, q1, q2) -> bool:
-    return side(p1, p2, q1) * side(p1, p2, q2) < 0 and side(q1, q2, p1) * side(q1, q2, p2) < 0
-
-
-def is_crossed(points: dict[str, tuple[float, float]]) -> bool:
-    """Whether the loop A-B-C-D crosses itself (the crossed configuration), else it is open."""
-    a, b, c, d = (points[k] for k in "ABCD")
-    return _segments_cross(a, b, c, d) or _segments_cross(b, c, d, a)
 
 
 # ---- coupler point (§7.6, Figure 7.21; the four-bar example's point C) --------------------

@@ -54,11 +54,6 @@ def parallel_axis(inertia_about_cg: float, mass: float, distance: float) -> floa
     return inertia_about_cg + mass * distance ** 2
 
 
-def static_deflection_speed(deflection: float, g: float = G) -> float:
-    """ω_n = √(g/δ): the spring's static deflection under the mass's weight gives K/m = g/δ."""
-    return math.sqrt(g / deflection)
-
-
 def springs_parallel(*stiffnesses: float) -> float:
     """K' = K₁ + K₂ + ...: springs that share one displacement."""
     return sum(stiffnesses)
@@ -152,9 +147,9 @@ def critical_damping(mass: float, omega_n: float) -> float:
     return 2 * mass * omega_n
 
 
-def damping_ratio(damping: float, mass: float, omega_n: float) -> float:
+def damping_ratio(damping: float, critical: float) -> float:
     """ζ = C / C_c."""
-    return damping / critical_damping(mass, omega_n)
+    return damping / critical
 
 
 def damped_speed(omega_n: float, zeta: float) -> float:
@@ -172,8 +167,3 @@ def decrement(first: float, last: float, cycles: float) -> float:
 def ratio_from_decrement(delta: float) -> float:
     """ζ from δ = 2πζ / √(1 − ζ²): ζ = δ / √(4π² + δ²) (eq. 6.46 solved)."""
     return delta / math.sqrt(TWO_PI ** 2 + delta ** 2)
-
-
-def decrement_from_ratio(zeta: float) -> float:
-    """δ = 2πζ / √(1 − ζ²)."""
-    return TWO_PI * zeta / math.sqrt(1 - zeta ** 2)

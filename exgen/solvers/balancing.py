@@ -165,12 +165,12 @@ def complete_balance_masses(p, d):
     fx, fy = components(d, "F", "F", [("mrB", None), ("mrC", "thetaC")], "kg*m", "forces of B and C",
                         table=("Forces of B and C", FORCE, _forces("BC", (None, "thetaC")), "m r"))
     # A at θ_A and D at θ_D close the force polygon: resolve across each direction (Cramer's rule)
-    across = math.sin(theta_d - p.thetaA)
-    d.require(abs(across) > 0.2, "A and D nearly in line: their masses are ill-determined")
-    mr_a = d.step("mrA", (fy * math.cos(theta_d) - fx * math.sin(theta_d)) / across, "kg*m", symbol=r"m_A r_A",
+    d.require(abs(math.sin(theta_d - p.thetaA)) > 0.2, "A and D nearly in line: their masses are ill-determined")
+    sizes = mb.two_directions((-fx, -fy), p.thetaA, theta_d)
+    mr_a = d.step("mrA", sizes[0], "kg*m", symbol=r"m_A r_A",
                   formula=r"\frac{@F_90 \cos @theta_D - @F_0 \sin @theta_D}{\sin(@theta_D - @thetaA)}",
                   note=r"resolving at right angles to D removes D's unknown")
-    mr_d = d.step("mrD", (fx * math.sin(p.thetaA) - fy * math.cos(p.thetaA)) / across, "kg*m", symbol=r"m_D r_D",
+    mr_d = d.step("mrD", sizes[1], "kg*m", symbol=r"m_D r_D",
                   formula=r"\frac{@F_0 \sin @thetaA - @F_90 \cos @thetaA}{\sin(@theta_D - @thetaA)}",
                   note=r"resolving at right angles to A removes A's unknown")
     d.require(mr_a > 0 and mr_d > 0, "a negative mass: A or D would sit half a turn from the stated angle")

@@ -19,18 +19,17 @@ def _radii(p, d):
 def _open_contact_angle(p, d, r1, r2):
     """Angle of contact on the smaller pulley of an open drive, with its known wrong versions."""
     small, large = ("r1", "r2") if r1 <= r2 else ("r2", "r1")
-    alpha = d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad",
-                   formula=rf"\sin^{{-1}}\frac{{@{large} - @{small}}}{{@X}}")
-    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"180^\circ - 2\,@alpha",
+    d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad", formula=rf"\sin^{{-1}}\frac{{@{large} - @{small}}}{{@X}}")
+    theta = d.step("theta", mb.contact_angle_open(r1, r2, p.X), "rad", formula=r"180^\circ - 2\,@alpha",
                    note="on the smaller pulley, which governs an open drive")
-    large = d.step("theta_large", 2 * math.pi - theta, "rad", symbol=r"\theta_{\mathrm{large}}",
+    large = d.step("theta_large", mb.contact_angle_open_large(theta), "rad", symbol=r"\theta_{\mathrm{large}}",
                    formula=r"360^\circ - @theta", note="on the larger pulley, 180° + 2α: the two wraps make a full turn")
     d.mistake("theta", "crossed_formula", mb.contact_angle_crossed(r1, r2, p.X))
     d.mistake("theta", "larger_pulley", large)
     d.mistake("theta_large", "smaller_pulley", theta)
     d.mistake("theta_large", "crossed_formula", mb.contact_angle_crossed(r1, r2, p.X))
     if abs(p.d2 - p.d1) < p.X:
-        d.mistake("theta", "diameters_for_radii", math.pi - 2 * math.asin(abs(p.d2 - p.d1) / p.X))
+        d.mistake("theta", "diameters_for_radii", mb.contact_angle_open(p.d1, p.d2, p.X))
     return theta
 
 
@@ -168,13 +167,13 @@ def drive_geometry(p, d):
     """Example 1.3: angle of contact and belt length, open and crossed."""
     r1, r2 = _radii(p, d)
     theta_open = _open_contact_angle(p, d, r1, r2)
-    alpha_x = d.step("alpha_crossed", mb.alpha_crossed(r1, r2, p.X), "rad", symbol=r"\alpha_{\times}",
-                     formula=r"\sin^{-1}\frac{@r1 + @r2}{@X}")
-    d.step("theta_crossed", math.pi + 2 * alpha_x, "rad", symbol=r"\theta_{\times}",
+    d.step("alpha_crossed", mb.alpha_crossed(r1, r2, p.X), "rad", symbol=r"\alpha_{\times}",
+           formula=r"\sin^{-1}\frac{@r1 + @r2}{@X}")
+    d.step("theta_crossed", mb.contact_angle_crossed(r1, r2, p.X), "rad", symbol=r"\theta_{\times}",
            formula=r"180^\circ + 2\,@alpha_crossed", note="the same on both pulleys of a crossed drive")
     d.mistake("theta_crossed", "open_formula", theta_open)
-    d.mistake("theta_crossed", "diameters_for_radii",
-              math.pi + 2 * math.asin(min(1.0, (p.d1 + p.d2) / p.X)))
+    if p.d1 + p.d2 <= p.X:  # else the diameters give no angle at all
+        d.mistake("theta_crossed", "diameters_for_radii", mb.contact_angle_crossed(p.d1, p.d2, p.X))
     d.step("L_open", mb.length_open(r1, r2, p.X), "m", symbol=r"L_{\mathrm{open}}",
            formula=r"\pi(@r1 + @r2) + 2\,@X + \frac{(@r2 - @r1)^2}{@X}")
     d.step("L_crossed", mb.length_crossed(r1, r2, p.X), "m", symbol=r"L_{\times}",
@@ -216,8 +215,8 @@ def v_belt_count(p, d):
     r2 = d.step("r2", d2 / 2, "m", formula=r"\frac{@d2}{2}")
     v = d.step("v", p.N1 * r1, "m/s", formula=r"@N1\,@r1")
     d.require(v <= p.v_max, "belt speed above the limit")
-    alpha = d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad", formula=r"\sin^{-1}\frac{@r2 - @r1}{@X}")
-    theta = d.step("theta", math.pi - 2 * alpha, "rad", formula=r"180^\circ - 2\,@alpha",
+    d.step("alpha", mb.alpha_open(r1, r2, p.X), "rad", formula=r"\sin^{-1}\frac{@r2 - @r1}{@X}")
+    theta = d.step("theta", mb.contact_angle_open(r1, r2, p.X), "rad", formula=r"180^\circ - 2\,@alpha",
                    note="on the smaller (motor) pulley")
     beta = d.step("beta", p.groove / 2, "rad", formula=r"\frac{@groove}{2}", note="half the groove angle",
                       symbolic=False)

@@ -18,23 +18,23 @@ ZETA_MAX = 0.6
 def decrement_steps(p, d):
     """δ per cycle and ζ, from a₁/a_r after n cycles (params a1 and a_r, or their ratio `fall`)."""
     if "fall" in p:
-        ln_ratio, formula = math.log(p.fall), r"\frac{\ln @fall}{@n}"
+        first, last, formula = p.fall, 1.0, r"\frac{\ln @fall}{@n}"
     else:
-        ln_ratio, formula = math.log(p.a1 / p.a_r), r"\frac{1}{@n}\ln\frac{@a1}{@a_r}"
+        first, last, formula = p.a1, p.a_r, r"\frac{1}{@n}\ln\frac{@a1}{@a_r}"
     n = p.n
-    delta = d.step("delta", ln_ratio / n, "", symbol=r"\delta", formula=formula,
+    delta = d.step("delta", vb.decrement(first, last, n), "", symbol=r"\delta", formula=formula,
                    note=r"the logarithmic decrement per cycle: $n$ complete cycles lie between $a_1$ and $a_r$, so "
                         r"$r - 1 = n$ in $\ln(a_1/a_r) = (r - 1)\,\delta$ (eq. 6.46)")
-    d.mistake("delta", "cycles_plus_one", ln_ratio / (n + 1))
+    slips = {"cycles_plus_one": vb.decrement(first, last, n + 1),
+             "log10_for_ln": math.log10(first / last) / n}
     if n > 1:
-        d.mistake("delta", "cycles_minus_one", ln_ratio / (n - 1))
-    d.mistake("delta", "log10_for_ln", math.log10(math.exp(ln_ratio)) / n)
+        slips["cycles_minus_one"] = vb.decrement(first, last, n - 1)
+    for name, wrong in slips.items():
+        d.mistake("delta", name, wrong)
     zeta = d.step("zeta", vb.ratio_from_decrement(delta), "", symbol=r"\zeta",
                   formula=r"\frac{@delta}{\sqrt{4\pi^2 + @delta^2}}", note="δ = 2πζ/√(1 − ζ²) solved for ζ")
-    d.mistake("zeta", "cycles_plus_one", vb.ratio_from_decrement(ln_ratio / (n + 1)))
-    if n > 1:
-        d.mistake("zeta", "cycles_minus_one", vb.ratio_from_decrement(ln_ratio / (n - 1)))
-    d.mistake("zeta", "log10_for_ln", vb.ratio_from_decrement(math.log10(math.exp(ln_ratio)) / n))
+    for name, wrong in slips.items():
+        d.mistake("zeta", name, vb.ratio_from_decrement(wrong))
     d.require(zeta < ZETA_MAX, "damping too heavy for a machine that oscillates visibly")
     return zeta
 
@@ -46,7 +46,7 @@ def damped_spring_mass(p, d):
     cc = d.step("C_c", vb.critical_damping(p.m, omega), "N*s/m", symbol=r"C_c", formula=r"2\,@m\,@omega_n",
                 note="critical damping")
     d.mistake("C_c", "factor_two_missing", p.m * omega)
-    zeta = d.step("zeta", p.C / cc, "", symbol=r"\zeta", formula=r"\frac{@C}{@C_c}")
+    zeta = d.step("zeta", vb.damping_ratio(p.C, cc), "", symbol=r"\zeta", formula=r"\frac{@C}{@C_c}")
     d.require(0.05 <= zeta <= ZETA_MAX, "a damping ratio outside 0.05-0.6: not a practical damper")
     wd = d.step("omega_d", vb.damped_speed(omega, zeta), "rad/s", symbol=r"\omega_d",
                 formula=r"@omega_n\,\sqrt{1 - @zeta^2}", note="eq. 6.44")
@@ -79,6 +79,6 @@ def log_decrement(p, d):
     d.mistake("ratio", "ratio_inverted", 1 / ratio)
     d.mistake("ratio", "damping_ignored", 1.0)
     wd = d.step("omega_d", omega * ratio, "rad/s", symbol=r"\omega_d", formula=r"@omega_n\,@ratio")
-    d.step("T_d", 2 * math.pi / wd, "s", symbol=r"T_d", formula=r"\frac{2\pi}{@omega_d}", note="eq. 6.45")
+    d.step("T_d", vb.period(wd), "s", symbol=r"T_d", formula=r"\frac{2\pi}{@omega_d}", note="eq. 6.45")
     d.mistake("T_d", "omega_for_f", 1 / wd)
     d.require(c > 0, "no damping")

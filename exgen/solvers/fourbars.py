@@ -90,9 +90,10 @@ def coupler_point(p, d):
     is circuit 2). The coupler triangle's angle α at C (cosine law again) turns C → B onto C → P.
     """
     circuit = circuit_of(p)
-    xb = d.step("xB", p.xA + p.L2 * math.cos(p.theta2), "m", symbol="x_B", formula=r"@xA + @L2\cos @theta2",
+    pin = lk.polar((p.xA, p.yA), p.L2, p.theta2)
+    xb = d.step("xB", pin[0], "m", symbol="x_B", formula=r"@xA + @L2\cos @theta2",
                 note="$R_H = R_1 + R_2$, from D to the crank pin B")
-    yb = d.step("yB", p.yA + p.L2 * math.sin(p.theta2), "m", symbol="y_B", formula=r"@yA + @L2\sin @theta2")
+    yb = d.step("yB", pin[1], "m", symbol="y_B", formula=r"@yA + @L2\sin @theta2")
     theta_h = direction(d, "theta_H", r"\theta_H", "@yB", "@xB", yb, xb, "the direction D → B")
     r_h = d.step("r_H", math.hypot(xb, yb), "m", symbol="r_H", formula=r"\sqrt{@xB^2 + @yB^2}")
     phi = d.step("phi", lk.cosine_law_angle(r_h, p.L4, p.L3), "rad", symbol=r"\varphi",
@@ -102,8 +103,9 @@ def coupler_point(p, d):
     theta4 = wrapped(d, "theta4", r"\theta_4", rf"@theta_H {'+' if turn > 0 else '-'} @phi", theta_h + turn * phi,
                      note=f"circuit {circuit}: C on the {'right' if circuit == 2 else 'left'} of B → D, "
                           f"{'counter-' if turn > 0 else ''}clockwise from D → B")
-    xc = d.step("xC", p.L4 * math.cos(theta4), "m", symbol="x_C", formula=r"@L4\cos @theta4")
-    yc = d.step("yC", p.L4 * math.sin(theta4), "m", symbol="y_C", formula=r"@L4\sin @theta4")
+    rocker_pin = lk.polar((0.0, 0.0), p.L4, theta4)
+    xc = d.step("xC", rocker_pin[0], "m", symbol="x_C", formula=r"@L4\cos @theta4")
+    yc = d.step("yC", rocker_pin[1], "m", symbol="y_C", formula=r"@L4\sin @theta4")
     theta3 = direction(d, "theta3", r"\theta_3", "@yC - @yB", "@xC - @xB", yc - yb, xc - xb,
                        "the coupler B → C from the loop $R_4 = R_H + R_3$ (the text's loop takes $R_3$ from C to B, "
                        "180° round)")
@@ -115,9 +117,9 @@ def coupler_point(p, d):
                      theta3 + math.pi + (alpha if right else -alpha),
                      note="the line C → P: from C the coupler points back along θ3 + 180°, turned through α "
                          + ("counter-clockwise (P on the right of B → C)" if right else "clockwise (P on the left of B → C)"))
-    xp = d.step("xP", xc + p.CP * math.cos(theta6), "m", symbol="x_P", formula=r"@xC + @CP\cos @theta6",
-                note="$R_P = R_4 + R_6$")
-    yp = d.step("yP", yc + p.CP * math.sin(theta6), "m", symbol="y_P", formula=r"@yC + @CP\sin @theta6")
+    point = lk.polar((xc, yc), p.CP, theta6)
+    xp = d.step("xP", point[0], "m", symbol="x_P", formula=r"@xC + @CP\cos @theta6", note="$R_P = R_4 + R_6$")
+    yp = d.step("yP", point[1], "m", symbol="y_P", formula=r"@yC + @CP\sin @theta6")
     gamma = lk.cosine_law_angle(p.L3, p.L4, r_h)
     require_well_conditioned(d, gamma, 2 * phi)
     _coupler_point_mistakes(p, d, (theta_h, phi, turn, alpha, right), (theta3, theta4), (xp, yp))
@@ -128,7 +130,7 @@ def _coupler_point_mistakes(p, d, geometry, angles, answer) -> None:
     turned frame of eqs 7.5-7.8 with its angles left measured from AD."""
     theta_h, phi, turn, alpha, right = geometry
     theta3, theta4 = angles
-    b = (p.xA + p.L2 * math.cos(p.theta2), p.yA + p.L2 * math.sin(p.theta2))
+    b = lk.polar((p.xA, p.yA), p.L2, p.theta2)
 
     def place(t4: float, right_used: bool):
         """θ3 and P for the rocker at t4, with P on the given side of B -> C."""

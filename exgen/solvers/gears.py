@@ -46,7 +46,7 @@ def pitch_geometry(p, d):
     d.mistake("v", "diameter_for_radius", p.N1 * d1)
     d.mistake("v", "rpm_as_rad_s", p.N1 * 60 / (2 * math.pi) * d1 / 2)
     d.mistake("v", "other_gear_speed", n2 * d1 / 2)
-    d.step("Pd", 1 / p.m, "1/m", symbol=r"P_d", formula=r"\frac{25.4}{@m}", shown="1/in",
+    d.step("Pd", mg.diametral_pitch(p.m), "1/m", symbol=r"P_d", formula=r"\frac{25.4}{@m}", shown="1/in",
            note="teeth per inch of pitch diameter, with the module in mm (25.4 mm to the inch)")
     d.mistake("Pd", "inch_factor_missing", 1 / mm / 0.0254)
 

@@ -78,9 +78,10 @@ _STABILITY_REASON = {
 def spring_controlled(p, d):
     """Problem 4.6: a straight controlling-force line through two measured points: the radius at a speed,
     the change of spring load that makes it isochronous, and the speed it would then run at."""
-    slope = d.step("k_F", (p.F2 - p.F1) / (p.r2 - p.r1), "N/m", symbol=r"a", formula=r"\frac{@F2 - @F1}{@r2 - @r1}",
+    line = gv.controlling_line(p.F1, p.r1, p.F2, p.r2)
+    slope = d.step("k_F", line[0], "N/m", symbol=r"a", formula=r"\frac{@F2 - @F1}{@r2 - @r1}",
                    note="F = a r + b, a straight controlling-force line")
-    intercept = d.step("b_F", p.F1 - slope * p.r1, "N", symbol=r"b", formula=r"@F1 - @k_F\,@r1")
+    intercept = d.step("b_F", line[1], "N", symbol=r"b", formula=r"@F1 - @k_F\,@r1")
     kind = gv.stability(intercept, p.F2)
     d.step("kind", kind, "", symbol=r"\text{governor}", note=_STABILITY_REASON[kind])
     d.mistake("kind", "stability_inverted", {gv.STABLE: gv.UNSTABLE, gv.UNSTABLE: gv.STABLE}.get(kind, gv.STABLE))

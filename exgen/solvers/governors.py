@@ -12,6 +12,7 @@ the friction f adding to the sleeve load while the sleeve rises and relieving it
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 
 from ..mechanics import governors as gv
@@ -176,28 +177,29 @@ def porter_dead_load(p, d):
     iz = d.step("IZ", arms.IZ, "m", symbol=r"IZ", formula=r"@l\sin @alpha", note="ZY = IZ; IY = 2 IZ")
     r = d.step("r", iz + p.e, "m", formula=r"@IZ + @e")
     force = d.step("F", p.m * p.N ** 2 * r, "N", formula=r"@m\,@N^2\,@r")
-    load = d.step("M", (force * h - p.m * G * iz) / (G * iz), "kg", symbol=r"M",
+    load = d.step("M", gv.sleeve_mass(force, p.m, arms), "kg", symbol=r"M",
                   formula=r"\frac{@F\,@h - @m\,@g\,@IZ}{@g\,@IZ}",
                   note=r"moments about I: $F\cdot XZ = m g\cdot IZ + \tfrac{1}{2} M g\cdot IY$")
-    d.mistake("M", "rpm_as_rad_s", (p.m * (p.N / RPM) ** 2 * r * h - p.m * G * iz) / (G * iz))
-    d.mistake("M", "sleeve_moment_arm", 2 * (force * h - p.m * G * iz) / (G * iz))
+    d.mistake("M", "rpm_as_rad_s", gv.sleeve_mass(p.m * (p.N / RPM) ** 2 * r, p.m, arms))
+    d.mistake("M", "sleeve_moment_arm", gv.sleeve_mass(force, p.m, dataclasses.replace(arms, IY=arms.IZ)))
     if p.e > 0:
-        d.mistake("M", "offset_ignored", (p.m * p.N ** 2 * iz * h - p.m * G * iz) / (G * iz))
+        d.mistake("M", "offset_ignored", gv.sleeve_mass(p.m * p.N ** 2 * iz, p.m, arms))
     speeds = []
     for tag, sign, word in (("1", -1, "rises"), ("2", 1, "falls")):
         hk = d.step(f"h_{tag}", h + sign * p.x / 2, "m", formula=rf"@h {'-' if sign < 0 else '+'} \frac{{@x}}{{2}}",
                     note=f"the sleeve {word} by x: each arm's height changes by half of it")
         d.require(0.25 * p.l < hk < 0.98 * p.l, "the sleeve's travel takes the arms past their working range")
-        izk = d.step(f"IZ_{tag}", math.sqrt(p.l ** 2 - hk ** 2), "m", symbol=rf"IZ_{tag}", formula=rf"\sqrt{{@l^2 - @h_{tag}^2}}")
-        rk = d.step(f"r_{tag}", izk + p.e, "m", formula=rf"@IZ_{tag} + @e")
-        w = d.step(f"omega_{tag}", math.sqrt((p.m + load) * G * izk / (p.m * rk * hk)), "rad/s", symbol=rf"\omega_{tag}",
+        at = gv.pose_at_depth(linkage, 2 * hk)   # equal arms: the sleeve pivots lie 2h below the upper ones
+        arms_k = gv.lever_arms(linkage, at)
+        d.step(f"IZ_{tag}", arms_k.IZ, "m", symbol=rf"IZ_{tag}", formula=rf"\sqrt{{@l^2 - @h_{tag}^2}}")
+        d.step(f"r_{tag}", at.r, "m", formula=rf"@IZ_{tag} + @e")
+        w = d.step(f"omega_{tag}", gv.equilibrium_speed(p.m, load * G, arms_k), "rad/s", symbol=rf"\omega_{tag}",
                    formula=rf"\sqrt{{\frac{{(@m + @M)\,@g\,@IZ_{tag}}}{{@m\,@r_{tag}\,@h_{tag}}}}}",
                    note=rf"$F_{tag}\,h_{tag} = (m + M) g\,IZ_{tag}$")
         wrong_h = h + sign * p.x
         if 0 < wrong_h < p.l:
-            wrong_iz = math.sqrt(p.l ** 2 - wrong_h ** 2)
-            d.mistake(f"omega_{tag}", "full_sleeve_travel",
-                      math.sqrt((p.m + load) * G * wrong_iz / (p.m * (wrong_iz + p.e) * wrong_h)), if_apart=True)
+            wrong = gv.lever_arms(linkage, gv.pose_at_depth(linkage, 2 * wrong_h))
+            d.mistake(f"omega_{tag}", "full_sleeve_travel", gv.equilibrium_speed(p.m, load * G, wrong), if_apart=True)
         speeds.append(w)
     sensitivity = d.step("S", gv.sensitivity(p.N, *speeds), "", symbol=r"S",
                          formula=r"\frac{@N}{@omega_1 - @omega_2}", note="eq 4.5, with ω the mean speed")

@@ -50,11 +50,11 @@ def _heel(p, d, momentum_name: str):
     cc = d.step("C_c", fc * p.h, "N*m", formula=r"@F_c\,@h", note="its overturning couple with the machine upright")
     d.mistake("C_c", "kmh_not_converted", gy.centrifugal_force(p.m, p.v / KMH, p.R) * p.h)
     d.constant("g", gy.G, "m/s^2", note="standard gravity")
-    theta = d.step("theta", math.atan2(gyro + cc, p.m * gy.G * p.h), "rad",
+    theta = d.step("theta", gy.heel_angle(gyro, cc, p.m, p.h), "rad",
                    formula=r"\tan^{-1}\frac{@C_g + @C_c}{@m\,@g\,@h}",
                    note="both couples overturn outwards and scale with cos θ; the weight rights the machine "
                         "with $m g h \\sin\\theta$: $(C_g + C_c)\\cos\\theta = m g h \\sin\\theta$")
-    d.mistake("theta", "gyro_ignored", math.atan2(cc, p.m * gy.G * p.h))
+    d.mistake("theta", "gyro_ignored", gy.heel_angle(0.0, cc, p.m, p.h))
     d.mistake("theta", "complement", math.pi / 2 - theta)
     return theta
 
@@ -98,8 +98,8 @@ def motorcycle_heel(p, d):
     record(d, "C_g", "engine_sense_reversed", (2 * p.I_w - s * p.G * p.I_e) * omega_w * big_omega)
     d.mistake("C_g", "diameter_for_radius", (2 * p.I_w + s * p.G * p.I_e) * p.v / p.d_w * big_omega)
     d.mistake("C_g", "one_wheel", (p.I_w + s * p.G * p.I_e) * omega_w * big_omega)
-    record(d, "theta", "engine_sense_reversed", math.atan2(
-        (2 * p.I_w - s * p.G * p.I_e) * omega_w * big_omega + d.value_of("C_c"), p.m * gy.G * p.h))
+    record(d, "theta", "engine_sense_reversed", gy.heel_angle(
+        (2 * p.I_w - s * p.G * p.I_e) * omega_w * big_omega, d.value_of("C_c"), p.m, p.h))
 
 
 # ---- Problem 5.3: reactions at the wheels of a car on a curve --------------------------------
@@ -178,25 +178,27 @@ def rail_car_limiting_speed(p, d):
                    formula=r"2\,@I_a " + ("+" if s > 0 else "-") + r" 2\,@G\,@I_m",
                    note="two axles at ω = v/r and two motors at Gω, "
                         + ("the same way as their axles" if s > 0 else "against their axles"))
-    per_v2 = d.step("k_c", p.m * p.h / p.R, "kg", symbol=r"\frac{C_c}{v^2}", formula=r"\frac{@m\,@h}{@R}",
-                    note="the centrifugal couple m v²h/R, per v²")
-    per_v2_g = d.step("k_g", sigma / (p.r * p.R), "kg", symbol=r"\frac{C_g}{v^2}",
+    per_v2 = d.step("k_c", gy.centrifugal_couple_per_v2(p.m, p.h, p.R), "kg", symbol=r"\frac{C_c}{v^2}",
+                    formula=r"\frac{@m\,@h}{@R}", note="the centrifugal couple m v²h/R, per v²")
+    per_v2_g = d.step("k_g", gy.gyroscopic_couple_per_v2(sigma, p.r, p.R), "kg", symbol=r"\frac{C_g}{v^2}",
                       formula=r"\frac{@S}{@r\,@R}", note="the gyroscopic couple Σ(I G)(v/r)(v/R), per v²; "
                       + ("positive: it overturns outwards like the wheels" if sigma > 0
                          else "negative: it tilts the car inwards, against the centrifugal couple"))
     d.constant("g", gy.G, "m/s^2", note="standard gravity")
-    wheel = d.step("W_i", p.m * gy.G / 4, "N", symbol=r"\frac{m g}{4}", formula=r"\frac{@m\,@g}{4}",
-                   note="each inner wheel's share of the weight")
-    v = d.step("v_max", math.sqrt(wheel * 2 * p.x / (per_v2 + per_v2_g)), "m/s", symbol=r"v_{\max}",
+    d.step("W_i", p.m * gy.G / 4, "N", symbol=r"\frac{m g}{4}", formula=r"\frac{@m\,@g}{4}",
+           note="each inner wheel's share of the weight")
+    v = d.step("v_max", gy.rail_limiting_speed(p.m, p.x, per_v2 + per_v2_g), "m/s", symbol=r"v_{\max}",
                formula=r"\sqrt{\frac{2\,@x\,@W_i}{@k_c + @k_g}}",
                note="each inner wheel loses $(C_c + C_g)/(2x)$: it leaves the rail when that equals its share")
     kmh = v / KMH
     d.require(40 <= kmh <= 200, "a limiting speed outside 40-200 km/h: not a practical rail car")
-    wrong = per_v2 + (2 * p.I_a - s * 2 * p.G * p.I_m) / (p.r * p.R)
-    d.mistake("v_max", "gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds",
-              math.sqrt(wheel * 2 * p.x / wrong) if wrong > 0 else float("nan"))
-    d.mistake("v_max", "gyro_ignored", math.sqrt(wheel * 2 * p.x / per_v2))
-    d.mistake("v_max", "motors_ignored", math.sqrt(wheel * 2 * p.x / (per_v2 + 2 * p.I_a / (p.r * p.R))))
+    wrong = per_v2 + gy.gyroscopic_couple_per_v2(2 * p.I_a - s * 2 * p.G * p.I_m, p.r, p.R)
+    if wrong > 0:  # else the wrong sign leaves the car on the rail at any speed
+        d.mistake("v_max", "gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds",
+                  gy.rail_limiting_speed(p.m, p.x, wrong))
+    d.mistake("v_max", "gyro_ignored", gy.rail_limiting_speed(p.m, p.x, per_v2))
+    d.mistake("v_max", "motors_ignored",
+              gy.rail_limiting_speed(p.m, p.x, per_v2 + gy.gyroscopic_couple_per_v2(2 * p.I_a, p.r, p.R)))
     d.step("C_g", abs(per_v2_g) * v ** 2, "N*m", symbol=r"C_g", formula=r"\left|@k_g\right|\,@v_max^2",
            note="the size of the gyroscopic couple at the limiting speed")
     effect = "adds" if per_v2_g > 0 else "relieves"

@@ -219,6 +219,8 @@ def ship_turbine(p, d):
            formula=r"I\,\vec{\omega} \times \vec{\omega}_p",
            note=f"the couple points {word(pitch_couple, 'ship')}: about the vertical axis it turns the bow to {side}")
     d.mistake("pitch_effect", "precession_reversed", "starboard" if side == "port" else "port")
+    rolled = gy.reactive_couple(spin, gy.rolling(to_right=True))  # either way: Ω along the rotor's own axis
+    d.require(not any(rolled), "the rotor does not spin about the roll axis")
     d.step("roll_effect", "no effect", "", symbol=r"\text{rolling}",
            note="rolling turns the ship about its fore-and-aft axis, the rotor's own axis: Ω is parallel to ω, "
                 "ω × Ω = 0, so there is no gyroscopic couple")

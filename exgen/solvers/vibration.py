@@ -106,10 +106,10 @@ def torsional_shaft_disc(p, d):
     j = d.step("J", vb.polar_second_moment(p.d), "m^4", formula=r"\frac{\pi\,@d^4}{32}",
                note="the shaft's polar second moment of area (eq. 6.32)")
     d.mistake("J", "bending_for_polar", vb.second_moment(p.d))
-    q = d.step("q", p.G * j / p.l, "N*m", symbol="q", formula=r"\frac{@G\,@J}{@l}",
+    q = d.step("q", vb.torsional_stiffness(p.G, p.d, p.l), "N*m", symbol="q", formula=r"\frac{@G\,@J}{@l}",
                note="torsional stiffness, torque per radian of twist (eq. 6.33)")
     d.mistake("q", "bending_for_polar", p.G * vb.second_moment(p.d) / p.l)
-    d.mistake("q", "radius_for_diameter", p.G * vb.polar_second_moment(p.d / 2) / p.l)
+    d.mistake("q", "radius_for_diameter", vb.torsional_stiffness(p.G, p.d / 2, p.l))
     natural_frequency(d, "q", "I", torsional=True)
     d.mistake("f_n", "wrong_axis", vb.frequency(vb.natural_speed(q, p.m * r ** 2 / 4)))
     d.mistake("f_n", "bending_for_polar", vb.frequency(vb.natural_speed(p.G * vb.second_moment(p.d) / p.l, inertia)))
@@ -140,13 +140,13 @@ def stepped_shaft(p, d):
 def cantilever_end_mass(p, d):
     """Problem 6.2: longitudinal and transverse natural frequencies of a cantilever shaft carrying a disc."""
     area = d.step("A", vb.area(p.d), "m^2", formula=r"\frac{\pi\,@d^2}{4}")
-    s_long = d.step("s_l", p.E * area / p.l, "N/m", symbol=r"s_l", formula=r"\frac{@E\,@A}{@l}",
+    s_long = d.step("s_l", vb.axial_stiffness(p.E, p.d, p.l), "N/m", symbol=r"s_l", formula=r"\frac{@E\,@A}{@l}",
                     note="axial stiffness: the disc pulls the shaft along its length")
     w_long = d.step("omega_l", vb.natural_speed(s_long, p.m), "rad/s", symbol=r"\omega_l",
                     formula=r"\sqrt{\frac{@s_l}{@m}}")
     d.step("f_l", vb.frequency(w_long), "Hz", symbol=r"f_l", formula=r"\frac{@omega_l}{2\pi}")
     d.mistake("f_l", "omega_for_f", w_long)
-    d.mistake("f_l", "diameter_for_radius", vb.frequency(vb.natural_speed(p.E * math.pi * p.d ** 2 / p.l, p.m)))
+    d.mistake("f_l", "diameter_for_radius", vb.frequency(vb.natural_speed(vb.axial_stiffness(p.E, 2 * p.d, p.l), p.m)))
     i = d.step("I_a", vb.second_moment(p.d), "m^4", symbol="I", formula=r"\frac{\pi\,@d^4}{64}",
                note="second moment of area about a diameter (bending)")
     s_trans = d.step("s_t", vb.cantilever_stiffness(p.E, p.d, p.l), "N/m", symbol=r"s_t",

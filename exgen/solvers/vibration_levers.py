@@ -81,9 +81,9 @@ def damped_pendulum_lever(p, d):
     q = d.step("q", p.K * p.b ** 2 + p.M * vb.G * p.l, "N*m", symbol="q", formula=r"@K\,@b^2 + @M\,@g\,@l",
                note="moments about D for a small turn θ: the spring K (bθ) b and the weight M g l θ both restore")
     d.mistake("q", "pendulum_ignored", p.K * p.b ** 2)
-    omega = d.step("omega_n", math.sqrt(q / inertia), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@q}{@I_D}}",
+    omega = d.step("omega_n", vb.natural_speed(q, inertia), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@q}{@I_D}}",
                    note=r"from $I_D\ddot{\theta} + C a^2\dot{\theta} + q\,\theta = 0$")
-    d.mistake("omega_n", "pendulum_ignored", math.sqrt(p.K * p.b ** 2 / inertia))
+    d.mistake("omega_n", "pendulum_ignored", vb.natural_speed(p.K * p.b ** 2, inertia))
     d.mistake("omega_n", "omega_for_f", vb.frequency(omega))
     mass = d.step("m_T", inertia / p.a ** 2, "kg", symbol=r"m_T", formula=r"\frac{@I_D}{@a^2}",
                   note=r"the equivalent mass at A, the dashpot: $I_{ADE}/DA^2 + M(DE/DA)^2 + m_p$")
