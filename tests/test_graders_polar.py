@@ -83,3 +83,20 @@ def test_an_error_in_a_polar_part_is_carried_forward(variant):
     results = {r.part_id: r for r in grade_variant(variant, {"a": "600 kg mm at 48", "b": f"{600 / 110:.4f} kg"}).parts}
     assert results["a"].status == "wrong" and results["b"].status == "carried"
     assert results["b"].points == results["b"].max_points and "from your (a)" in results["b"].message
+
+
+def test_a_zero_has_no_direction():
+    """A polygon that closes gives 0 at any angle: the secondary force of a primary-balanced engine drawn at
+    the crank angles (not doubled) is 0, whatever angle a student writes with it."""
+    from exgen.answertypes.polar import Polar, polar
+
+    assert polar(Polar(0.0, 37.0), Polar(0.0, 180.0)) and not polar(Polar(0.0, 37.0), Polar(1e-3, 37.0))
+    assert not polar(Polar(5.0, 37.0), Polar(5.0, 180.0))
+
+
+def test_the_secondary_drawn_at_the_crank_angles_is_named_as_that_slip(bank):
+    template = bank.get("balancing.inline_primary_balance")
+    variant = make_variant(template, 3)
+    assert variant.mistakes["c"]["secondary_not_doubled"].magnitude == 0.0
+    result = next(r for r in grade_variant(variant, {"c": "0 N at 90 deg"}).parts if r.part_id == "c")
+    assert result.mistake == "secondary_not_doubled"

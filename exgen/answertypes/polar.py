@@ -55,7 +55,10 @@ class Polar:
 
 
 def polar(given: Polar, expected: Polar, rel: float = REL_TOL, abs_deg: float = ANGLE_ABS_TOL_DEG) -> bool:
-    """The magnitude within `rel`, the direction within `abs_deg` modulo a turn."""
+    """The magnitude within `rel`, the direction within `abs_deg` modulo a turn; a zero has no direction
+    (a polygon that closes: any angle written with 0 is that zero)."""
+    if given.magnitude == expected.magnitude == 0:
+        return True
     return numeric(given.magnitude, expected.magnitude, rel) and angle(given.angle_deg, expected.angle_deg, 0.0, abs_deg)
 
 

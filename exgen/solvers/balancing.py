@@ -180,9 +180,10 @@ def complete_balance_masses(p, d):
                  note="the distance from A to D")
     d.require(p.lAB + p.lBC + 0.05 <= l_d <= 2.0, "plane D does not lie beyond C, as the order A, B, C, D needs")
 
-    # every eccentricity taken as equal (masses used for m·r): θ_D is unchanged, the masses are not
+    # every eccentricity taken as equal (masses used for m·r): θ_D is unchanged, the masses are not; D's
+    # moment divided by B and C's eccentricity instead of its own
     ratio = p.rBC / p.rAD
-    for step, value in (("mA", m_a / ratio), ("mD", m_d / ratio), ("lD", l_d * ratio)):
+    for step, value in (("mA", m_a / ratio), ("mD", m_d / ratio), ("lD", mrl_d / (m_d * p.rBC))):
         d.mistake(step, "eccentricity_ignored", value)
     flipped = theta_d + PI
     d.mistake("theta_D", "resultant_not_balance", flipped)

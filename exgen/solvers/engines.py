@@ -212,7 +212,7 @@ def _primary_balance_slips(p, d, right_c, right_b, right_s, n):
         d.mistake(f"theta_{tag}", "resultant_not_balance", right[1] + PI)
     rows = [(p.m_out, 0.0), (right_b[0], right_b[1]), (right_c[0], right_c[1]), (p.m_out, p.phi)]
     k = p.r * p.N ** 2 / n
-    single = mb.polar(*mb.vector_sum((m * k, a) for m, a in rows))
+    single = me.polygon([m * k for m, _ in rows], [a for _, a in rows])  # 0 while the primary balances
     single = (single[0], single[1] + PI)  # its balancing direction
     d.mistake("Fs", "secondary_not_doubled", single[0])
     d.mistake("theta_Fs", "secondary_not_doubled", single[1])
