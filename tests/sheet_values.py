@@ -56,8 +56,7 @@ def same(ours, theirs, part, rel=1e-9) -> bool:
     if isinstance(ours, str):
         return ours == theirs
     if callable(ours):  # a formula: compared at points across its symbols' ranges
-        points = [{name: low + (high - low) * k / 4 for name, (low, high) in part.options["symbols"].items()}
-                  for k in range(1, 4)]
+        points = [{name: low + (high - low) * k / 4 for name, low, high in part.options["ranges"]} for k in range(1, 4)]
         return all(ours(**at) == pytest.approx(theirs(**at), rel=rel) for at in points)
     if isinstance(ours, tuple):
         if ours[0] == theirs.magnitude == 0:  # a polygon that closes: no direction
