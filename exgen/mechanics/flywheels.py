@@ -112,18 +112,15 @@ def area_above(points: Sequence[tuple[float, float]], level: float) -> float:
     """∫ (y − level) dx where the polyline lies above `level`: the energy a flywheel gives up while the
     machine needs more than the constant torque `level` that drives it (in N·m·s against time; times ω
     for joules). The text's ΔE when the torque rises above its mean once a cycle (Example 3.2)."""
-    crossings = set(level_crossings(points, level))
-    xs = sorted({x for x, _ in points} | crossings)
-    heights = [0.0 if x in crossings else _height(points, x) - level for x in xs]
-    return sum((x1 - x0) * (y0 + y1) / 2.0 for x0, x1, y0, y1 in zip(xs, xs[1:], heights, heights[1:])
-               if y0 >= 0 and y1 >= 0)
-
-
-def _height(points: Sequence[tuple[float, float]], x: float) -> float:
+    total = 0.0
     for (x0, y0), (x1, y1) in zip(points, points[1:]):
-        if x0 <= x <= x1:
-            return y0 if x1 == x0 else y0 + (y1 - y0) * (x - x0) / (x1 - x0)
-    raise ValueError(f"{x} lies outside the polyline")
+        h0, h1 = y0 - level, y1 - level
+        if h0 >= 0 and h1 >= 0:
+            total += (x1 - x0) * (h0 + h1) / 2.0
+        elif h0 > 0 or h1 > 0:  # the segment crosses the level: the triangle above it
+            top = max(h0, h1)
+            total += (x1 - x0) * top / (abs(h0) + abs(h1)) * top / 2.0
+    return total
 
 
 # ---- presses and starting ------------------------------------------------------------------
