@@ -37,7 +37,7 @@ def printed(v, *names, optional=()) -> SimpleNamespace:
             out[name] = 0.0
             continue
         assert str(p) in sheet, f"{v.template.id} seed {v.seed}: {name} = {p} is not on the sheet"
-        out[name] = float(Decimal(p.text)) * TO_SI[p.unit] if isinstance(p.exact, Decimal) else p.text
+        out[name] = float(Decimal(p.text.replace("\u2212", "-"))) * TO_SI[p.unit] if isinstance(p.exact, Decimal) else p.text
     return SimpleNamespace(**out)
 
 

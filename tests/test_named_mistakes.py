@@ -97,3 +97,16 @@ def test_shared_default_words_fit_every_part_that_uses_them(bank):
     uses = {(t.id, p.id) for t in bank for p in t.parts for m in p.mistakes if m.when == "diameters_for_radii"}
     kinds = {bank.get(t).part(p).unit for t, p in uses}
     assert {"deg", "m"} <= kinds  # an angle and a length: one text serves both
+
+
+def test_every_template_s_named_mistakes_have_values_worked_out_on_their_own(bank):
+    """The oracles of chapters 1, 2 and 6 and the mistake checks of chapters 3-5 and 7 between them work out
+    every template's named mistakes independently of its solver (each checks its chapter's are all there)."""
+    from test_mistake_values_ch3_ch4 import MISTAKES as ch34
+    from test_mistake_values_ch5_ch7 import MISTAKES as ch57
+    from test_oracle_ch1 import ORACLES as ch1
+    from test_oracle_ch2 import ORACLES as ch2
+    from test_oracle_ch6 import ORACLES as ch6
+
+    worked = set(ch1) | set(ch2) | set(ch6) | set(ch34) | set(ch57)
+    assert worked == set(bank.templates)

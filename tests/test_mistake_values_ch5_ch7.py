@@ -1,0 +1,360 @@
+"""Every named mistake of chapters 5 and 7 has an expected value of its own: each is worked out here from what
+the sheet prints, by the slip its name says, with the couples and positions worked as formulas of this file
+(the directions of chapter 5 and the text's position equations of chapter 7 from exgen.mechanics, which
+tests/test_gyroscopes_oracle.py and tests/test_linkages_oracle.py hold to oracles of their own), and
+compared with what the key records wherever it records it, over many draws."""
+from __future__ import annotations
+
+import cmath
+import math
+
+import pytest
+
+from exgen.mechanics import gyroscopes as gy
+from exgen.mechanics import linkages as lk
+from exgen.mechanics.mechanism_catalogue import build
+from exgen.mechanics.slider_cranks import slider_crank
+from sheet_values import G, check_mistakes, printed
+
+RPM = 2 * math.pi / 60
+KMH = 3.6                  # a speed in m/s left as the number of km/h is this much too large
+OTHER = {"left": "right", "right": "left", "raises the bow": "lowers the bow", "lowers the bow": "raises the bow",
+         "raises the nose": "lowers the nose", "lowers the nose": "raises the nose", "port": "starboard",
+         "starboard": "port", "front": "rear", "rear": "front", "adds": "relieves", "relieves": "adds",
+         "clockwise": "counter-clockwise", "counter-clockwise": "clockwise"}
+
+
+def other(v, part: str) -> str:
+    """The other choice than the key's (the direction oracle of chapter 5 checks the key's own)."""
+    return OTHER[v.answers[part].value]
+
+
+# ---- chapter 5 ------------------------------------------------------------------------------------------
+
+
+def vehicle_rotor_springs(v):
+    g = printed(v, "I", "N", "K", "l", "v", "R")
+    couple = g.I * g.N * g.v / g.R
+    return {"b": {"kmh_not_converted": KMH * g.v / g.R},
+            "c": {"rpm_as_rad_s": g.I * (g.N / RPM) * g.v / g.R, "kmh_not_converted": couple * KMH},
+            "d": {"half_spacing": 2 * couple / g.l, "couple_shared": couple / (2 * g.l)},
+            "f": {"precession_reversed": other(v, "f")}}
+
+
+def rotor_bearing_reactions(v):
+    g = printed(v, "m", "k", "N", "l", "a", "v", "R", "sense", "turn")
+    precession = g.v / g.R
+    couple = g.m * g.k ** 2 * g.N * precession
+    force = couple / g.l
+    weight = g.m * G
+    share = {"c": weight * (g.l - g.a) / g.l, "d": weight * g.a / g.l}
+    bow_up = gy.pitch_effect(gy.reactive_couple(gy.axial_spin(g.sense, "rear"), gy.turning(g.turn))) == "nose up"
+    lifted = "c" if bow_up else "d"                             # the rotor lifts on the bearing at the rising end
+    reaction = {p: share[p] + (-force if p == lifted else force) for p in ("c", "d")}
+    out = {"a": {"rpm_as_rad_s": couple / RPM, "radius_for_k": couple / 2}, "b": {"precession_reversed": other(v, "b")}}
+    for part in ("c", "d"):
+        wrong = {"gyro_added_where_it_relieves" if part == lifted else "gyro_subtracted_where_it_adds":
+                 reaction[part] + (2 * force if part == lifted else -2 * force), "weight_ignored": force}
+        if abs(g.a - g.l / 2) > 0.05 * g.l:
+            wrong["weight_halved"] = weight / 2 + reaction[part] - share[part]
+        out[part] = wrong
+    return out
+
+
+def aircraft_turning(v):
+    g = printed(v, "m", "k", "N", "v", "R")
+    couple = g.m * g.k ** 2 * g.N * g.v / g.R
+    return {"a": {"kmh_not_converted": KMH * g.v / g.R},
+            "b": {"rpm_as_rad_s": couple / RPM, "radius_for_k": couple / 2}, "c": {"precession_reversed": other(v, "c")}}
+
+
+def ship_turbine(v):
+    g = printed(v, "m", "k", "N", "v", "R", "phi", "T")
+    couple = g.m * g.k ** 2 * g.N * g.v / g.R
+    return {"a": {"rpm_as_rad_s": couple / RPM, "kmh_not_converted": couple * KMH},
+            "b": {"precession_reversed": other(v, "b")},
+            "c": {"degrees_not_converted": math.degrees(g.phi) * 2 * math.pi / g.T, "missing_2pi": g.phi / g.T},
+            "e": {"precession_reversed": other(v, "e")},
+            "f": {"rolling_like_steering": v.answers["b"].value, "rolling_like_pitching": v.answers["e"].value}}
+
+
+def car_wheel_reactions(v):
+    g = printed(v, "m", "b", "x", "h", "a", "d_w", "I_w", "m_e", "k_e", "G", "v", "R", "turn")
+    weight = g.m * G
+    share = {"f": weight * (g.b - g.a) / (2 * g.b), "r": weight * g.a / (2 * g.b)}
+    wheel = 2 * g.v / g.d_w
+    precession = g.v / g.R
+    wheels_couple = 4 * g.I_w * wheel * precession
+    engine_couple = g.m_e * g.k_e ** 2 * float(g.G) * wheel * precession
+    p_w, p_e = wheels_couple / (2 * g.x), engine_couple / (2 * g.b)
+    centrifugal = g.m * g.v ** 2 / g.R
+    p_c = centrifugal * g.h / (2 * g.x)
+    loaded = v.answers["c"].value                               # checked by the direction oracle
+    outer = "left" if g.turn == "right" else "right"
+    out = {"a": {"diameter_for_radius": p_w / 2, "wheelbase_for_track": wheels_couple / (2 * g.b)},
+           "b": {"track_for_wheelbase": engine_couple / (2 * g.x), "not_shared": engine_couple / g.b},
+           "c": {"precession_reversed": OTHER[loaded]}, "d": {"not_shared": centrifugal * g.h / g.x}}
+    for part, axle, side in (("e", "f", "left"), ("f", "f", "right"), ("g", "r", "left"), ("h", "r", "right")):
+        out_side = 1.0 if side == outer else -1.0
+        engine = p_e * (1.0 if (axle == "r") == (loaded == "rear") else -1.0)
+        other_share = share["r" if axle == "f" else "f"]
+        out[part] = {"sides_swapped": share[axle] - out_side * (p_w + p_c) + engine,
+                     "weight_split_reversed": other_share + out_side * (p_w + p_c) + engine,
+                     "centrifugal_ignored": share[axle] + out_side * p_w + engine}
+    return out
+
+
+def heel(couple: float, centrifugal: float, mass: float, height: float) -> float:
+    """Leaning θ: (C_g + C_c) cos θ = m g h sin θ."""
+    return math.atan2(couple + centrifugal, mass * G * height)
+
+
+def motorcycle_banking(v):
+    g = printed(v, "m", "h", "m_w", "k_w", "r_w", "m_e", "k_e", "G", "v", "R")
+    s = 1.0 if v.param("engine").text == "same" else -1.0      # said in words on the sheet
+    precession, wheel = g.v / g.R, g.v / g.r_w
+    wheels, engine = 2 * g.m_w * g.k_w ** 2, g.m_e * g.k_e ** 2
+    ratio = float(g.G)
+
+    def gyro(wheel_inertia, engine_inertia, engine_speed, sign=s):
+        return (wheel_inertia * wheel + sign * engine_inertia * engine_speed) * precession
+
+    couple = gyro(wheels, engine, ratio * wheel)
+    centrifugal = g.m * g.v ** 2 / g.R * g.h
+    theta = heel(couple, centrifugal, g.m, g.h)
+    return {"a": {"diameter_for_radius": g.v / (2 * g.r_w)},
+            "b": {"engine_sense_reversed": gyro(wheels, engine, ratio * wheel, -s),
+                  "radius_for_k": gyro(2 * g.m_w * g.r_w ** 2, engine, ratio * wheel),
+                  "one_wheel": gyro(wheels / 2, engine, ratio * wheel), "ratio_inverted": gyro(wheels, engine, wheel / ratio)},
+            "c": {"kmh_not_converted": g.m * (KMH * g.v) ** 2 / g.R},
+            "d": {"gyro_ignored": heel(0.0, centrifugal, g.m, g.h), "complement": math.pi / 2 - theta}}
+
+
+def motorcycle_heel(v):
+    g = printed(v, "I_w", "I_e", "G", "d_w", "m", "h", "v", "R")
+    s = 1.0 if v.param("engine").text == "same" else -1.0
+    precession, wheel = g.v / g.R, 2 * g.v / g.d_w
+    ratio = float(g.G)
+
+    def gyro(wheels=2 * g.I_w, sign=s, speed=wheel):
+        return (wheels + sign * ratio * g.I_e) * speed * precession
+
+    centrifugal = g.m * g.v ** 2 / g.R * g.h
+    theta = heel(gyro(), centrifugal, g.m, g.h)
+    return {"a": {"diameter_for_radius": g.v / g.d_w},
+            "b": {"engine_sense_reversed": gyro(sign=-s), "diameter_for_radius": gyro(speed=g.v / g.d_w),
+                  "one_wheel": gyro(wheels=g.I_w)},
+            "c": {"kmh_not_converted": g.m * (KMH * g.v) ** 2 / g.R * g.h},
+            "d": {"gyro_ignored": heel(0.0, centrifugal, g.m, g.h), "complement": math.pi / 2 - theta,
+                  "engine_sense_reversed": heel(gyro(sign=-s), centrifugal, g.m, g.h)}}
+
+
+def rail_car_limiting_speed(v):
+    g = printed(v, "m", "I_a", "I_m", "G", "x", "r", "h", "R")
+    s = 1.0 if v.param("motor").text == "same" else -1.0
+
+    def limit(spin_inertia: float) -> float | None:
+        """Each inner wheel (m g/4) loses (m v² h/R + Σ(IG) v²/(r R))/(2x): the speed where nothing is left."""
+        per_v2 = g.m * g.h / g.R + spin_inertia / (g.r * g.R)
+        return math.sqrt(g.m * G / 4 * 2 * g.x / per_v2) if per_v2 > 0 else None
+
+    ratio = float(g.G)
+    wrong = {"gyro_ignored": limit(0.0), "motors_ignored": limit(2 * g.I_a),
+             ("gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds"):
+                 limit(2 * g.I_a - s * 2 * ratio * g.I_m)}
+    return {"a": {k: value for k, value in wrong.items() if value is not None},
+            "c": {"precession_reversed": other(v, "c")}}
+
+
+# ---- chapter 7 ------------------------------------------------------------------------------------------
+
+
+def fourbar_position(v):
+    g = printed(v, "L1", "L2", "L3", "L4", "theta2", "circuit")
+    circuit = int(g.circuit)
+    bd = math.sqrt(g.L1 ** 2 + g.L2 ** 2 - 2 * g.L1 * g.L2 * math.cos(g.theta2))
+    gamma = math.acos((g.L3 ** 2 + g.L4 ** 2 - bd ** 2) / (2 * g.L3 * g.L4))
+    lengths = (g.L1, g.L2, g.L3, g.L4, g.theta2, gamma)
+    theta3 = lk.coupler_angle(*lengths, circuit)
+    theta4 = lk.rocker_angle(*lengths, circuit)
+    return {"a": {"degrees_as_radians": math.sqrt(g.L1 ** 2 + g.L2 ** 2 - 2 * g.L1 * g.L2 * math.cos(math.degrees(g.theta2)))},
+            "b": {"theta4_for_gamma": theta4, "supplement": math.pi - gamma},
+            "c": {"wrong_circuit": lk.coupler_angle(*lengths, 3 - circuit), "radians_for_degrees": math.radians(theta3)},
+            "d": {"wrong_circuit": lk.rocker_angle(*lengths, 3 - circuit), "gamma_for_theta4": gamma,
+                  "radians_for_degrees": math.radians(theta4)}}
+
+
+def coupler_point(v):
+    g = printed(v, "xA", "yA", "L2", "L3", "L4", "theta2", "circuit", "CP", "BP", "side")
+    b = complex(g.xA, g.yA) + g.L2 * cmath.exp(1j * g.theta2)       # D at the origin
+    phi = math.acos((abs(b) ** 2 + g.L4 ** 2 - g.L3 ** 2) / (2 * g.L4 * abs(b)))
+    turn = 1.0 if int(g.circuit) == 2 else -1.0
+    alpha = math.acos((g.CP ** 2 + g.L3 ** 2 - g.BP ** 2) / (2 * g.CP * g.L3))
+    right = g.side == "right"
+    ground = math.atan2(-g.yA, -g.xA)                                  # the line A -> D
+
+    def pose(rocker: float, p_right: bool):
+        c = g.L4 * cmath.exp(1j * rocker)
+        coupler = cmath.phase(c - b)
+        return coupler, c + g.CP * cmath.exp(1j * (coupler + math.pi + (alpha if p_right else -alpha)))
+
+    theta4 = cmath.phase(b) + turn * phi
+    theta3, _ = pose(theta4, right)
+    other4 = cmath.phase(b) - turn * phi
+    other3, other_p = pose(other4, right)
+    _, side_p = pose(theta4, not right)
+    return {"a": {"wrong_circuit": other4, "relative_to_ground_line": theta4 - ground},
+            "b": {"coupler_reversed": theta3 + math.pi, "relative_to_ground_line": theta3 - ground, "wrong_circuit": other3},
+            "d": {"wrong_circuit": other_p.real, "other_side": side_p.real},
+            "e": {"wrong_circuit": other_p.imag, "other_side": side_p.imag}}
+
+
+NAMES = ("AB", "BC", "CD", "DA")
+
+
+def table_7_1(s_l: float, p_q: float, shortest: str) -> str:
+    """Grashof's class from S + L against P + Q and the role of the shortest link."""
+    if abs(s_l - p_q) <= 1e-9 * max(s_l, p_q):
+        return "change-point"
+    if s_l > p_q:
+        return "triple-rocker"
+    return {"ground": "double-crank", "coupler": "double-rocker"}.get(shortest, "crank-rocker")
+
+
+def grashof(v):
+    g = printed(v, *NAMES, "ground")
+    lengths = {n: getattr(g, n) for n in NAMES}
+    s, p, q, l = sorted(NAMES, key=lambda n: (lengths[n], NAMES.index(n)))
+    at = NAMES.index(g.ground)
+    in_order = [NAMES[(at + k) % 4] for k in range(4)]            # ground, crank, coupler, rocker
+    ground, crank, coupler, rocker = (lengths[n] for n in in_order)
+    shortest = ("ground", "crank", "coupler", "rocker")[in_order.index(s)]
+    right = table_7_1(lengths[s] + lengths[l], lengths[p] + lengths[q], shortest)
+    pairs = [(ground + crank, coupler + rocker), (coupler + rocker, ground + crank),
+             (ground + coupler, crank + rocker), (crank + rocker, ground + coupler),
+             (lengths[s] + lengths[p], lengths[l] + lengths[q])]     # links summed by position, or S with P
+    wrong = next((k for k in (table_7_1(*pair, shortest) for pair in pairs) if k != right), None)
+    out = {"a": {"wrong_pair": lengths[s] + lengths[p]}, "b": {"wrong_pair": lengths[l] + lengths[q]}, "c": {}}
+    if wrong:
+        out["c"]["wrong_pair"] = wrong
+    if right in ("double-crank", "double-rocker", "crank-rocker"):
+        out["c"]["ground_ignored"] = "double-crank" if right == "crank-rocker" else "crank-rocker"
+    return out
+
+
+def rocker_swing(v):
+    g = printed(v, "L1", "L2", "L3", "L4")
+
+    def at_d(reach: float) -> float:                             # the angle ADC in triangle ACD
+        return math.acos((g.L1 ** 2 + g.L4 ** 2 - reach ** 2) / (2 * g.L1 * g.L4))
+
+    extended, folded = at_d(g.L3 + g.L2), at_d(g.L3 - g.L2)
+    swing = abs(extended - folded)
+    return {"a": {"interior_angle": extended, "sum_and_difference_swapped": math.pi - folded},
+            "b": {"interior_angle": folded, "sum_and_difference_swapped": math.pi - extended},
+            "c": {"radians_for_degrees": math.radians(swing)}}
+
+
+TOWARDS = {"right": (1.0, 0.0), "left": (-1.0, 0.0), "below": (0.0, -1.0), "above": (0.0, 1.0)}
+BRANCH = {"right": "left", "left": "right", "below": "above", "above": "below"}
+
+
+def slider_crank_mistakes(v):
+    g = printed(v, "slider", "L2", "L3", "theta2", "xA", "yA", "tip", optional=("L1",))
+    slide = "horizontal" if g.slider in ("right", "left") else "vertical"
+    ux, uy = TOWARDS[g.slider]
+    right = slider_crank(g.L2, g.L3, g.L1, g.theta2, slide, g.slider)
+    wrong = slider_crank(g.L2, g.L3, g.L1, g.theta2, slide, BRANCH[g.slider])
+    gamma = right.gamma                                           # the angle ABC
+
+    def along(position) -> float:
+        return position.c[0] * ux + position.c[1] * uy
+
+    tip = (g.xA + wrong.c[0] + ux * g.tip) if slide == "horizontal" else (g.yA + wrong.c[1] + uy * g.tip)
+    out = {"a": {"magnitude_only": right.theta3, "wrong_branch": wrong.direction},
+           "b": {"wrong_branch": along(wrong)}, "c": {"supplement": math.pi - gamma},
+           "d" if slide == "horizontal" else "e": {"wrong_branch": tip}}
+    if g.L1 > 0:
+        inline = slider_crank(g.L2, g.L3, 0.0, g.theta2, slide, g.slider)
+        out["a"]["offset_ignored"] = inline.direction
+        out["b"]["offset_ignored"] = along(inline)
+    return out
+
+
+def actuator_swing(v):
+    g = printed(v, "xO", "yO", "r", "s1", "s2", "side")
+    to_o = math.atan2(g.yO, g.xO)
+    ao = math.hypot(g.xO, g.yO)
+    turn = 1.0 if g.side == "left" else -1.0
+    out = {}
+    angles = []
+    for part, length in (("a", g.s1), ("b", g.s2)):
+        angle = math.acos((ao ** 2 + g.r ** 2 - length ** 2) / (2 * ao * g.r))    # OAB, by the cosine law
+        angles.append(angle)
+        out[part] = {"other_side": to_o - turn * angle, "interior_angle": angle}
+    out["c"] = {"radians_for_degrees": math.radians(abs(angles[0] - angles[1]))}
+    out["d"] = {"opposite": other(v, "d")}
+    return out
+
+
+def two_position_synthesis(v):
+    g = printed(v, "b", "xM1", "yM1", "phi1", "xM2", "yM2", "phi2")
+    points = {"M": [(g.xM1, g.yM1), (g.xM2, g.yM2)]}
+    points["N"] = [(x + g.b * math.cos(phi), y + g.b * math.sin(phi)) for (x, y), phi in zip(points["M"], (g.phi1, g.phi2))]
+    out, lengths, pivots = {}, {}, {}
+    for (xo, r), name in ((("a", "b"), "M"), (("c", "d"), "N")):
+        (x1, y1), (x2, y2) = points[name]
+        pivot = (x2 ** 2 + y2 ** 2 - x1 ** 2 - y1 ** 2) / (2 * (x2 - x1))    # on y = 0, as far from both
+        pivots[name], lengths[name] = pivot, math.hypot(x1 - pivot, y1)
+        mid = (x1 + x2) / 2
+        out[xo], out[r] = {"midpoint": mid}, {"midpoint": math.hypot(x1 - mid, y1)}
+    roles = {"ground": abs(pivots["N"] - pivots["M"]), "crank": lengths["M"], "coupler": g.b, "rocker": lengths["N"]}
+    s, p, q, l = sorted(roles.values())
+    shortest = min(roles, key=roles.get)
+    wrong = table_7_1(s + p, l + q, shortest)                      # S with P against L with Q
+    out["e"] = {"wrong_pair": wrong} if wrong != v.answers["e"].value else {}
+    return out
+
+
+def mobility(v):
+    """The counts from the drawn mechanism (its figure is the sheet's data), by Gruebler's equation."""
+    mech = build(*(v.param(n).text for n in ("base",)), tuple(v.param(n).text for n in ("add1", "add2", "add3")),
+                 v.param("mirror").text == "yes")
+    links, j1, j2 = mech.link_count, mech.lower_pairs, mech.higher_pairs
+
+    def gruebler(l, lower, higher):
+        return 3 * (l - 1) - 2 * lower - higher
+
+    out = {"a": {"ground_not_counted": links - 1}, "b": {}, "c": {},
+           "d": {"ground_not_counted": gruebler(links - 1, j1, j2), "without_minus_one": 3 * links - 2 * j1 - j2}}
+    if mech.shared_extra:
+        out["b"]["shared_joint_counted_once"] = j1 - mech.shared_extra
+        out["d"]["shared_joint_counted_once"] = gruebler(links, j1 - mech.shared_extra, j2)
+    if j2:
+        out["b"]["higher_pair_as_lower"], out["c"]["higher_pair_as_lower"] = j1 + j2, 0
+        out["d"]["higher_pair_as_lower"] = gruebler(links, j1 + j2, 0)
+    if mech.sliders:
+        out["b"]["slider_not_counted"] = j1 - len(mech.sliders)
+        out["d"]["slider_not_counted"] = gruebler(links, j1 - len(mech.sliders), j2)
+    return out
+
+
+MISTAKES = {
+    "gyroscopes.vehicle_rotor_springs": vehicle_rotor_springs, "gyroscopes.rotor_bearing_reactions": rotor_bearing_reactions,
+    "gyroscopes.aircraft_turning": aircraft_turning, "gyroscopes.ship_turbine": ship_turbine,
+    "gyroscopes.car_wheel_reactions": car_wheel_reactions, "gyroscopes.motorcycle_banking": motorcycle_banking,
+    "gyroscopes.motorcycle_heel": motorcycle_heel, "gyroscopes.rail_car_limiting_speed": rail_car_limiting_speed,
+    "linkages.fourbar_position": fourbar_position, "linkages.coupler_point": coupler_point, "linkages.grashof": grashof,
+    "linkages.rocker_swing": rocker_swing, "linkages.slider_crank": slider_crank_mistakes,
+    "linkages.actuator_swing": actuator_swing, "linkages.two_position_synthesis": two_position_synthesis,
+    "linkages.mobility": mobility,
+}
+
+
+def test_every_chapter_5_and_7_template_has_its_mistakes_worked(bank):
+    assert sorted(t.id for t in bank if t.chapter in (5, 7)) == sorted(MISTAKES)
+
+
+@pytest.mark.parametrize("template_id", sorted(MISTAKES))
+def test_every_named_mistake_has_the_value_its_slip_gives(bank, template_id):
+    check_mistakes(bank, template_id, MISTAKES[template_id])
