@@ -18,28 +18,15 @@ import pytest
 
 from exgen.variant import make_variant
 
+import sheet_values
+from sheet_values import G
+
 SEEDS = range(40)
-G = 9.81
-TO_SI = {
-    "mm": 1e-3, "m": 1.0, "mm^2": 1e-6, "N*m": 1.0, "deg": math.pi / 180, "rpm": math.pi / 30, "kW": 1e3,
-    "kJ": 1e3, "J": 1.0, "percent": 1e-2, "kg*m^2": 1.0, "kg": 1.0, "s": 1.0, "N": 1.0, "kN/m": 1e3,
-    "kg/m^3": 1.0, "rad/s": 1.0, "rad/s^2": 1.0, "": 1.0, "N/m": 1.0,
-}
 
 
 def printed(v, *names, optional=()) -> dict:
-    """The givens as the sheet prints them, in SI; a name in `optional` printed as 0 may be left unsaid
-    ("pivoted on the axis")."""
-    sheet = v.statement + "\n" + "\n".join(v.asks.values())
-    out = {}
-    for name in names + tuple(optional):
-        p = v.param(name)
-        if name in optional and p.text == "0":
-            out[name] = 0.0
-            continue
-        assert str(p) in sheet, f"{v.template.id} seed {v.seed}: {name} = {p} is not on the sheet"
-        out[name] = float(Decimal(p.text)) * TO_SI[p.unit] if isinstance(p.exact, Decimal) else p.text
-    return out
+    """The givens as the sheet prints them, in SI, by name (tests/sheet_values.py reads them)."""
+    return vars(sheet_values.printed(v, *names, optional=optional))
 
 
 def torque_terms(text: str) -> list[float]:
