@@ -59,19 +59,20 @@ def test_loops_that_do_not_close_are_refused():
         fw.crossing_energies([100, -50])
 
 
-EXAMPLE_3_2 = [(0.0, 5.5), (0.5, 5.5), (0.7, 44.0), (0.9, 44.0), (1.1, 5.5), (2.0, 5.5)]
-
-
 def test_example_3_2_torque_time():
+    """5.5 N·m, rising from 0.5 s to 44 N·m at 0.7 s, held to 0.9 s, back at 1.1 s; a 2 s cycle at 1500 rpm."""
     w = rpm(1500)
-    work = fw.polyline_integral(EXAMPLE_3_2) * w
+    pulse = fw.trapezium_width(0.5, 0.7, 0.9, 1.1) * (44.0 - 5.5)
+    assert pulse == pytest.approx(15.4)                           # ½[(1.1 − 0.5) + (0.9 − 0.7)] × 38.5
+    work = (5.5 * 2.0 + pulse) * w
     assert work == pytest.approx(4146.912, abs=0.01)       # printed from ω = 157.08 rad/s
-    mean = fw.polyline_mean(EXAMPLE_3_2)
+    mean = work / (w * 2.0)
     # Erratum: the text divides by 2 x 157.8 (a typo for 157.08 rad/s) and prints 13.14 N·m
     assert mean == pytest.approx(13.2)
     assert mean * w == pytest.approx(2073.5, abs=0.05)      # printed 2073 W (13.14 x 157.8 happens to agree)
-    assert fw.level_crossings(EXAMPLE_3_2, mean) == pytest.approx([0.54, 1.06])   # x and y, as printed
-    delta_e = fw.area_above(EXAMPLE_3_2, mean) * w
+    x, y = fw.trapezium_crossings(0.5, 0.7, 0.9, 1.1, 5.5, 44.0, mean)
+    assert (x, y) == pytest.approx((0.54, 1.06))             # as printed
+    delta_e = fw.trapezium_width(x, 0.7, 0.9, y) * w * (44.0 - mean)
     # Erratum: printed 1753.09 J from 157.8 rad/s and 13.14 N·m
     assert delta_e == pytest.approx(1741.70, abs=5e-3)
     cs = fw.coefficient_of_fluctuation(delta_e, 18 * 0.25 ** 2, w)
@@ -79,13 +80,15 @@ def test_example_3_2_torque_time():
     assert cs == pytest.approx(0.062745, abs=5e-7)
 
 
-@pytest.mark.parametrize("level", [0.0, 2.5, 10 / 3, 7.0])
-def test_the_area_above_a_level_counts_every_pulse_above_it(level):
-    points = [(0, 0.0), (1, 10.0), (2, 0.0), (3, 0.0), (4, 10.0), (5, 0.0), (6, 0.0)]
-    xs = np.linspace(0, 6, 600001)
-    above = np.clip(np.interp(xs, *zip(*points)) - level, 0.0, None)
-    assert fw.area_above(points, level) == pytest.approx(np.trapezoid(above, xs), rel=1e-6)
-    assert fw.area_above(points, level) == pytest.approx(2 * (10 - level) ** 2 / 10)   # two triangles, by hand
+@pytest.mark.parametrize("level", [5.5, 10.0, 30.0, 43.0])
+def test_the_pulse_above_a_level_is_its_trapezium_from_the_crossings(level):
+    """∫ (τ − level) dt where the pulse lies above the level, by numerical integration, against the
+    trapezium between the crossings: the energy the flywheel gives up above a motor torque `level`."""
+    times, torques = (0.0, 0.5, 0.7, 0.9, 1.1, 2.0), (5.5, 5.5, 44.0, 44.0, 5.5, 5.5)
+    xs = np.linspace(0, 2, 800001)
+    above = np.clip(np.interp(xs, times, torques) - level, 0.0, None)
+    x, y = fw.trapezium_crossings(0.5, 0.7, 0.9, 1.1, 5.5, 44.0, level)
+    assert fw.trapezium_width(x, 0.7, 0.9, y) * (44.0 - level) == pytest.approx(np.trapezoid(above, xs), rel=1e-6)
 
 
 def test_example_3_3_press():

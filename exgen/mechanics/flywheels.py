@@ -10,7 +10,7 @@ with ω = (ω₁ + ω₂)/2 the mean speed and C_s = (ω₁ − ω₂)/ω the co
 of speed: the *total* band, so "within ±0.5 % of the mean speed" is C_s = 0.01.
 
 The fluctuation of energy comes from a turning-moment diagram: as loops of measured area
-(Example 3.1), as a piecewise-linear torque against time or angle (Example 3.2), or as
+(Example 3.1), as a trapezoidal pulse of torque against time (Example 3.2), or as
 an equation in the crank angle (Problems 3.2, 3.5, `turning_moment.py`'s closed-form integral).
 """
 from __future__ import annotations
@@ -86,41 +86,21 @@ def rim_thickness(area: float, width_per_thickness: float) -> float:
     return math.sqrt(area / width_per_thickness)
 
 
-# ---- a torque given as a closed polyline over one period (against time or angle) -------------
+# ---- a torque that rises above a steady base in one trapezoidal pulse (Example 3.2) -------------------
 
 
-def polyline_integral(points: Sequence[tuple[float, float]]) -> float:
-    """∫ y dx of straight segments through `points` (x increasing): the trapezium rule is exact."""
-    return sum((x1 - x0) * (y0 + y1) / 2.0 for (x0, y0), (x1, y1) in zip(points, points[1:]))
+def trapezium_width(start: float, top_start: float, top_end: float, end: float) -> float:
+    """The mean width of a trapezium that rises from `start` to `top_start`, stays level to `top_end` and
+    falls to `end`: ½[(end − start) + (top_end − top_start)], so that its area is this times its height."""
+    return 0.5 * ((end - start) + (top_end - top_start))
 
 
-def polyline_mean(points: Sequence[tuple[float, float]]) -> float:
-    """The mean height of a polyline over its whole span."""
-    return polyline_integral(points) / (points[-1][0] - points[0][0])
-
-
-def level_crossings(points: Sequence[tuple[float, float]], level: float) -> list[float]:
-    """x where the polyline crosses the height `level` (linear interpolation on each segment)."""
-    out = []
-    for (x0, y0), (x1, y1) in zip(points, points[1:]):
-        if (y0 - level) * (y1 - level) < 0:
-            out.append(x0 + (x1 - x0) * (level - y0) / (y1 - y0))
-    return out
-
-
-def area_above(points: Sequence[tuple[float, float]], level: float) -> float:
-    """∫ (y − level) dx where the polyline lies above `level`: the energy a flywheel gives up while the
-    machine needs more than the constant torque `level` that drives it (in N·m·s against time; times ω
-    for joules). The text's ΔE when the torque rises above its mean once a cycle (Example 3.2)."""
-    total = 0.0
-    for (x0, y0), (x1, y1) in zip(points, points[1:]):
-        h0, h1 = y0 - level, y1 - level
-        if h0 >= 0 and h1 >= 0:
-            total += (x1 - x0) * (h0 + h1) / 2.0
-        elif h0 > 0 or h1 > 0:  # the segment crosses the level: the triangle above it
-            top = max(h0, h1)
-            total += (x1 - x0) * top / (abs(h0) + abs(h1)) * top / 2.0
-    return total
+def trapezium_crossings(start: float, top_start: float, top_end: float, end: float, base: float, peak: float,
+                        level: float) -> tuple[float, float]:
+    """Where a trapezoidal pulse from `base` up to `peak` crosses the height `level` on its way up and on its
+    way down (the straight sides carried on for a level outside the pulse)."""
+    rise = (level - base) / (peak - base)
+    return start + (top_start - start) * rise, end - (end - top_end) * rise
 
 
 # ---- presses and starting ------------------------------------------------------------------

@@ -34,12 +34,11 @@ def punching_press(p, d):
                    note="the rest comes from the flywheel")
     d.mistake("dE", "motor_ignored", p.E)
     held = fw.kinetic_energy(p.I, w1)
-    d.require(given < held, "the flywheel would stop: it holds less energy than a pressing takes from it")
+    d.require(p.E < held, "the flywheel holds less energy than one pressing needs")  # then it cannot stop either
     w2 = d.step("omega_2", fw.speed_after(w1, given, p.I), "rad/s", symbol=r"\omega_2",
                 formula=r"\sqrt{@N^2 - \frac{2\,@dE}{@I}}", note=r"from $\Delta E = \tfrac{1}{2} I(\omega_1^2 - \omega_2^2)$")
     drop = d.step("drop", w1 - w2, "rad/s", symbol=r"\omega_1 - \omega_2", formula=r"@N - @omega_2")
-    if p.E < held:  # with the motor ignored the flywheel would stop: no speed to name
-        d.mistake("drop", "motor_ignored", w1 - fw.speed_after(w1, p.E, p.I))
+    d.mistake("drop", "motor_ignored", w1 - fw.speed_after(w1, p.E, p.I))
     d.mistake("drop", "linearised", given / (p.I * w1), if_apart=True)  # nearly right for a small drop
     d.mistake("drop", "final_speed", w2)
     as_rad_s = w1 / RPM  # the rpm figure taken for rad/s

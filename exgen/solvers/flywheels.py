@@ -11,7 +11,6 @@ from __future__ import annotations
 import math
 import string
 
-from ..errors import InvalidDraw
 from ..mechanics import flywheels as fw
 
 MM2 = 1e-6
@@ -108,38 +107,29 @@ def flywheel_rim(p, d):
 # ---- Example 3.2: a torque-time diagram ----------------------------------------------------------
 
 
-def _torque_corners(p) -> list[tuple[float, float]]:
-    """The machine's torque over one cycle: the base, a rise, the peak (held from t₂ to t₃), a fall."""
-    return [(0.0, p.tau_0), (p.t1, p.tau_0), (p.t2, p.tau_p), (p.t3, p.tau_p), (p.t4, p.tau_0), (p.T, p.tau_0)]
-
-
 def torque_time(p, d):
     """Example 3.2: a constant-torque motor feeding a machine whose torque rises in one trapezoidal pulse."""
     w = p.N
-    corners = _torque_corners(p)
-    pulse = [(t, tau - p.tau_0) for t, tau in corners[1:5]]
-    peak_area = d.step("A_pulse", fw.polyline_integral(pulse), "N*m*s",
+    peak_area = d.step("A_pulse", fw.trapezium_width(p.t1, p.t2, p.t3, p.t4) * (p.tau_p - p.tau_0), "N*m*s",
                        symbol=r"A_{\mathrm{pulse}}", formula=r"\tfrac{1}{2}\left[(@t4 - @t1) + (@t3 - @t2)\right](@tau_p - @tau_0)",
                        note="the trapezium above the base torque")
-    work = d.step("W", fw.polyline_integral(corners) * w, "J", formula=r"(@tau_0\,@T + @A_pulse)\,@N",
+    work = d.step("W", (p.tau_0 * p.T + peak_area) * w, "J", formula=r"(@tau_0\,@T + @A_pulse)\,@N",
                   note="work per cycle = area under the torque-time graph × ω (θ = ωt)")
-    tau_m = d.step("tau_M", fw.polyline_mean(corners), "N*m", symbol=r"\tau_M", formula=r"\frac{@W}{@N\,@T}",
+    tau_m = d.step("tau_M", work / (w * p.T), "N*m", symbol=r"\tau_M", formula=r"\frac{@W}{@N\,@T}",
                    note="the motor does the same work in a cycle at constant torque")
     d.mistake("tau_M", "peak_base_average", (p.tau_p + p.tau_0) / 2)
     d.mistake("tau_M", "base_left_out", peak_area / p.T)
     d.step("P", tau_m * w, "W", symbol=r"P_M", formula=r"@tau_M\,@N")
     d.mistake("P", "rpm_as_rad_s", tau_m * w * 60 / (2 * math.pi))
-    crossing = fw.level_crossings(corners, tau_m)
-    if len(crossing) != 2:  # a mean torque, between base and peak, always does; a student's own may not
-        raise InvalidDraw("the torque line does not cross the pulse: no area lies above it")
+    crossing = fw.trapezium_crossings(p.t1, p.t2, p.t3, p.t4, p.tau_0, p.tau_p, tau_m)
     x = d.step("x", crossing[0], "s", formula=r"@t1 + (@t2 - @t1)\frac{@tau_M - @tau_0}{@tau_p - @tau_0}",
                note="where the rising torque crosses the mean line")
     y = d.step("y", crossing[1], "s", formula=r"@t4 - (@t4 - @t3)\frac{@tau_M - @tau_0}{@tau_p - @tau_0}",
                note="where the falling torque crosses it")
-    delta_e = d.step("dE", fw.area_above(corners, tau_m) * w, "J", symbol=r"\Delta E",
+    delta_e = d.step("dE", fw.trapezium_width(x, p.t2, p.t3, y) * w * (p.tau_p - tau_m), "J", symbol=r"\Delta E",
                      formula=r"\tfrac{1}{2}\left[(@y - @x) + (@t3 - @t2)\right]\,@N\,(@tau_p - @tau_M)",
                      note="the area above the mean torque line: the flywheel gives this up")
-    d.mistake("dE", "area_above_base", fw.area_above(corners, p.tau_0) * w)
+    d.mistake("dE", "area_above_base", peak_area * w)
     d.mistake("dE", "time_not_converted", delta_e / w)
     d.mistake("dE", "rpm_as_rad_s", delta_e * 60 / (2 * math.pi))
     inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2")
