@@ -43,7 +43,7 @@ def read_submission(path: Path, seconds: float = READ_SECONDS) -> Submission:
     if kind is None:
         raise SubmissionError(path, f"not an answer file: expected {', '.join(sorted(SUFFIXES))}")
     deadline = time.perf_counter() + seconds
-    loaded = LOADERS[kind](path, None if kind in BINARY else read_text(path), deadline)
+    loaded = LOADERS[kind](path, None if kind in BINARY else read_text(path, deadline), deadline)
     return _submission(path, loaded)
 
 

@@ -9,37 +9,23 @@ problem file, never graded for anyone. Every file found is either graded or list
 """
 from __future__ import annotations
 
-import os
 import re
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import lru_cache, partial
 from pathlib import Path
 
 from exgen.assignment import Student
 from exgen.errors import SubmissionError
-from exgen.outdir import MARKER
 
 from .answers import Submission, read_submission
 from .echo import shown
-from .formats import SUFFIXES, file_kind
+from .formats import SUFFIXES
 from .results import FileProblem
+from .walk import LimitsReached, walk
 
 #: What a student id may look like (it names the feedback file): as exgen.assignment requires.
 SAFE_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
-#: How deep below the submissions folder files are looked for, and how many at most.
-MAX_DEPTH = 4
-MAX_FILES = 5000
 
-#: Files grading itself writes, never read back as answers.
-OUTPUT_FILES = {"gradebook.csv", "canvas_gradebook.csv", "moodle_grades.csv", "parts.csv"}
-
-HIDDEN = "a hidden file; skipped"
-LINK = "a symbolic link; not followed"
-IN_OUTPUT = "inside a folder exgen wrote ({folder}); skipped"
-OUR_OUTPUT = "a gradebook written by exgen grade, not an answer file; skipped"
-NOT_ANSWERS = "not an answer file ({kind}); answer files are {suffixes}"
-TOO_DEEP = "more than {depth} folders down; skipped (put answer files at most {depth} folders down)"
-TOO_MANY = "holds more than {limit} files; the rest were not looked at"
 WHOSE_FILE = ("cannot tell whose file this is: its name and folders name no student {of} (name it <id>.yaml, "
               "or put it in a folder named by the id)")
 SEVERAL = "its name or folders name several students ({students})"
@@ -49,8 +35,10 @@ OTHER_ASSIGNMENT = "is for the assignment {given!r}, not {expected!r}"
 NO_CODE = "The answer file carries no sheet code; it was graded against your own sheet."
 NAMED_INSIDE = ("An answer file that names you inside, {files}, was not graded: its name and folder do not carry "
                 "your id (name it {id}.yaml, or put it in a folder named {id}). Ask your instructor.")
-DUPLICATE = "{student} handed in {count} files; graded the newest, {newest}"
+DUPLICATE = "{student} handed in {count} files; graded the newest{holding}, {newest}"
 OLDER_FILE = "an older file from {student}; {newest} was graded instead"
+EMPTY_FILE = ("holds no answers (only its header, or every answer blank): not a submission beside {student}'s "
+              "{newest}, which has answers and was graded instead")
 
 
 @dataclass
@@ -66,57 +54,6 @@ class Entry:
     notes: list[str] = field(default_factory=list)
 
 
-def answer_files(directory: Path) -> tuple[list[Path], list[FileProblem]]:
-    """Files that may be answers, and every other file found with why it is skipped."""
-    directory = Path(directory)
-    found, skipped, seen = [], [], 0
-    for folder, subfolders, names in os.walk(directory):
-        here = Path(folder)
-        depth = len(here.relative_to(directory).parts)
-        if (here / MARKER).is_file() and here != directory:
-            skipped.append(FileProblem(here, IN_OUTPUT.format(folder=here.name)))
-            subfolders[:] = []
-            continue
-        for sub in sorted(subfolders):
-            if (here / sub).is_symlink():
-                skipped.append(FileProblem(here / sub, LINK))
-        subfolders[:] = sorted(s for s in subfolders if not (here / s).is_symlink())
-        if depth > MAX_DEPTH:
-            skipped += [FileProblem(here / n, TOO_DEEP.format(depth=MAX_DEPTH)) for n in sorted(names)]
-            subfolders[:] = []
-            continue
-        for name in sorted(names):
-            seen += 1
-            if seen > MAX_FILES:
-                break
-            path = here / name
-            reason = _skipped(path, directory)
-            if reason:
-                skipped.append(FileProblem(path, reason))
-            else:
-                found.append(path)
-        if seen > MAX_FILES:
-            break
-    if seen > MAX_FILES:
-        skipped.append(FileProblem(directory, TOO_MANY.format(limit=MAX_FILES)))
-    return found, skipped
-
-
-def _skipped(path: Path, directory: Path) -> str:
-    """Why a file is not read as answers, or "" if it is."""
-    relative = path.relative_to(directory)
-    if any(part.startswith(".") or part == "__MACOSX" for part in relative.parts):
-        return HIDDEN
-    if path.is_symlink():
-        return LINK
-    if path.name.lower() in OUTPUT_FILES:
-        return OUR_OUTPUT
-    if file_kind(path) is None:
-        kind = path.suffix.lower() or "no extension"
-        return NOT_ANSWERS.format(kind=shown(kind, 20), suffixes=", ".join(sorted(SUFFIXES)))
-    return ""
-
-
 def read_one(path: Path) -> tuple[Submission | None, str]:
     """An answer file read, or None and why it cannot be."""
     try:
@@ -126,17 +63,24 @@ def read_one(path: Path) -> tuple[Submission | None, str]:
 
 
 def collect(directory: Path, roster: list[Student] | None = None, *, assignment: str = "",
-            codes: dict[str, str] | None = None, read_all=None) -> tuple[list[Entry], list[FileProblem]]:
-    """Every student to grade (roster order, else by id) and every file not graded, with why.
-    `codes` are the sheet codes issued (by student id); `assignment` the id the files must answer;
-    `read_all(paths)` gives read_one of each path, in order (by default here, one after another)."""
+            codes: dict[str, str] | None = None, read_all=None,
+            accept_limits: bool = False) -> tuple[list[Entry], list[FileProblem], list[str]]:
+    """Every student to grade (roster order, else by id), every file not graded with why, and the limits
+    the walk reached (graders.walk): with any, LimitsReached is raised before a file is read, unless
+    `accept_limits`. `codes` are the sheet codes issued (by student id); `assignment` the id the files must
+    answer; `read_all(paths)` gives read_one of each path, in order (by default here, one after another)."""
     directory = Path(directory)
     known = {s.id: s for s in roster} if roster is not None else None
-    files, problems = answer_files(directory)
+    index = _Roster(known) if known is not None else None
+    walked = walk(directory, partial(_claims, index))
+    if walked.limits and not accept_limits:
+        raise LimitsReached(directory, walked.limits)
+    files = walked.files
+    problems = [_owned(p, directory, index) if p.path in walked.placed else p for p in walked.skipped]
     found: dict[str, list[Entry]] = {}
     claimed: dict[str, list[str]] = {}  # files no one's by their place that name a student inside
     for path, (submission, error) in zip(files, (read_all or _read_each)(files)):
-        owner, why_not = whose(path.relative_to(directory), known)
+        owner, why_not = whose(path.relative_to(directory), index)
         if not owner:  # say what the file holds, to help whoever sorts it out
             inside = (f" (it says `student: {shown(submission.student, 40)}` inside)" if submission and
                       submission.student else f" (and it cannot be read: {error})" if error else "")
@@ -159,23 +103,40 @@ def collect(directory: Path, roster: list[Student] | None = None, *, assignment:
         entries.sort(key=lambda e: order[e.student.id])
     else:
         entries.sort(key=lambda e: e.student.id)
-    return entries, problems
+    return entries, problems, walked.limits
+
+
+def _owned(problem: FileProblem, directory: Path, index: _Roster | None) -> FileProblem:
+    """A file the walk skipped, with the student whose place it is in, if it is one's."""
+    if index is None:
+        return problem
+    owner = whose(problem.path.relative_to(directory), index)[0]
+    return FileProblem(problem.path, problem.reason, owner) if owner else problem
 
 
 def _read_each(paths: list[Path]):
     return map(read_one, paths)
 
 
-def whose(relative: Path, known: dict[str, Student] | None) -> tuple[str, str]:
+def _claims(index: _Roster | None, parts: tuple[str, ...], is_file: bool) -> bool:
+    """Whether the last of a path's parts names a student (graders.walk.Claims): with a roster, an id or
+    full name in it; without, a top-level file or folder named as an id."""
+    name = _stem(parts[-1]) if is_file else parts[-1]
+    if index is None:
+        return len(parts) == 1 and bool(SAFE_ID.fullmatch(name))
+    return bool(index.ids_in(name) or index.names_in(name))
+
+
+def whose(relative: Path, index: _Roster | None) -> tuple[str, str]:
     """The student a file belongs to by where it sits (its folders, nearest first, then its name), or ""
     and why not."""
     names = [*reversed(relative.parts[:-1]), _stem(relative.name)]
-    if known is None:  # no roster: the first folder, else the file name, if it is a valid id
+    if index is None:  # no roster: the first folder, else the file name, if it is a valid id
         candidates = [relative.parts[0]] if len(relative.parts) > 1 else [_stem(relative.name)]
         owner = next((c for c in candidates if SAFE_ID.fullmatch(c)), "")
         return owner, "" if owner else WHOSE_FILE.format(of="by a valid id")
     for name in names:
-        matches = _ids_in(name, known) or _names_in(name, known)
+        matches = index.ids_in(name) or index.names_in(name)
         if len(matches) == 1:
             return matches[0], ""
         if len(matches) > 1:
@@ -189,20 +150,50 @@ def _on_roster(given: str, known: dict[str, Student] | None) -> str:
     return by_folded.get(given.strip().casefold(), "")
 
 
+_STRIPPED = frozenset((*SUFFIXES, ".txt"))
+
+
 def _stem(name: str) -> str:
     """The name without its answer-file suffixes ("A21001.yaml.txt" -> "A21001")."""
-    path = Path(name)
-    while path.suffix.lower() in (*SUFFIXES, ".txt") and path.stem:
-        path = Path(path.stem)
-    return path.name
+    while True:  # as Path(name).suffix and .stem, in plain string steps (every name of a folder passes here)
+        dot = name.rfind(".")
+        if dot <= 0 or dot == len(name) - 1 or name[dot:].lower() not in _STRIPPED:
+            return name
+        name = name[:dot]
 
 
-def _ids_in(name: str, known: dict[str, Student]) -> list[str]:
-    """Roster ids that appear in `name` as a whole token (not inside a longer run of letters and digits)."""
-    if name in known:
-        return [name]
-    by_lower = {sid.lower(): sid for sid in known}
-    return sorted({by_lower[m.group(1).lower()] for m in _id_pattern(tuple(by_lower)).finditer(name)})
+class _Roster:
+    """A roster's ids and full names, looked up in file and folder names."""
+
+    def __init__(self, known: dict[str, Student]):
+        self.known = known
+        self.by_lower = {sid.lower(): sid for sid in known}
+        self.pattern = _id_pattern(tuple(self.by_lower))
+        self.by_name: dict[str, list[str]] = {}
+        for sid, student in known.items():
+            full = " ".join(student.name.lower().split())
+            if full:
+                self.by_name.setdefault(full, []).append(sid)
+
+    def ids_in(self, name: str) -> list[str]:
+        """Roster ids that appear in `name` as a whole token (not inside a longer run of letters and digits)."""
+        if name in self.known:
+            return [name]
+        if not self.by_lower:
+            return []
+        return sorted({self.by_lower[m.group(1).lower()] for m in self.pattern.finditer(name)})
+
+    def names_in(self, name: str) -> list[str]:
+        """Students whose full name is the folder name, or starts it as "Full Name_12345_assignsubmission_file_"."""
+        if not self.by_name:
+            return []
+        lowered = " ".join(name.lower().replace("_", " _ ").split())
+        found = set(self.by_name.get(lowered, ()))
+        cut = lowered.find(" _")
+        while cut != -1:
+            found.update(self.by_name.get(lowered[:cut], ()))
+            cut = lowered.find(" _", cut + 1)
+        return sorted(found)
 
 
 @lru_cache(maxsize=4)
@@ -210,17 +201,6 @@ def _id_pattern(ids: tuple[str, ...]) -> re.Pattern:
     """One pattern for every id of a roster, longest first, each between non-alphanumerics."""
     alternatives = "|".join(re.escape(i) for i in sorted(ids, key=len, reverse=True))
     return re.compile(rf"(?<![A-Za-z0-9])({alternatives})(?![A-Za-z0-9])", re.IGNORECASE)
-
-
-def _names_in(name: str, known: dict[str, Student]) -> list[str]:
-    """Students whose full name starts the folder name, as "Full Name_12345_assignsubmission_file_"."""
-    lowered = " ".join(name.lower().replace("_", " _ ").split())
-    out = []
-    for sid, student in known.items():
-        full = " ".join(student.name.lower().split())
-        if full and (lowered == full or lowered.startswith(full + " _")):
-            out.append(sid)
-    return out
 
 
 def _refusal(owner: str, submission: Submission, assignment: str, codes: dict[str, str] | None) -> str:
@@ -244,17 +224,32 @@ def _code(text: str) -> str:
 
 
 def _chosen(entries: list[Entry], problems: list[FileProblem]) -> Entry:
-    """The file graded for one student: the newest readable one not refused (else the newest)."""
+    """The file graded for one student: the newest readable one not refused that holds an answer; a file
+    holding none (only `student:`, or the blank form) is no submission beside one that does, whatever its
+    date. With no such file, the newest readable one, else the newest."""
     if len(entries) == 1:
         return entries[0]
-    ordered = sorted(entries, key=lambda e: (not (e.refused or e.error), _mtime(e.path), e.path.name))
+    ordered = sorted(entries, key=lambda e: (_usable(e), _answered(e), _mtime(e.path), e.path.name))
     chosen = ordered[-1]
-    sid = chosen.student.id
-    others = [e for e in ordered[:-1] if not e.refused and not e.error]
+    sid, newest = chosen.student.id, chosen.path.name
+    others = [e for e in ordered[:-1] if _usable(e)]
     if others:
-        chosen.notes.append(DUPLICATE.format(student=sid, count=len(others) + 1, newest=chosen.path.name))
-        problems += [FileProblem(e.path, OLDER_FILE.format(student=sid, newest=chosen.path.name), sid) for e in others]
+        holding = " holding answers" if _answered(chosen) and any(not _answered(e) for e in others) else ""
+        chosen.notes.append(DUPLICATE.format(student=sid, count=len(others) + 1, newest=newest, holding=holding))
+        problems += [FileProblem(e.path, (EMPTY_FILE if _answered(chosen) and not _answered(e) else OLDER_FILE)
+                                 .format(student=sid, newest=newest), sid) for e in others]
     return chosen
+
+
+def _usable(entry: Entry) -> bool:
+    return entry.submission is not None and not entry.refused and not entry.error
+
+
+def _answered(entry: Entry) -> bool:
+    """Whether a file holds anything typed as an answer (a blank answer is nothing)."""
+    submission = entry.submission
+    return submission is not None and (any(text.strip() for parts in submission.answers.values()
+                                           for text in parts.values()) or any(submission.problems.values()))
 
 
 def _mtime(path: Path) -> float:

@@ -19,6 +19,7 @@ from pathlib import Path
 import yaml
 
 from exgen.errors import SubmissionError
+from exgen.safefile import UnsafeFile, read_bytes
 
 from .echo import shown
 
@@ -70,19 +71,15 @@ def file_kind(path: Path) -> str | None:
     return SUFFIXES.get(suffixes[-1]) if suffixes else None
 
 
-def read_text(path: Path) -> str:
-    """The file as text: size-limited, UTF-8 (or UTF-16 with its byte-order mark), no NUL bytes."""
+def read_text(path: Path, deadline: float | None = None) -> str:
+    """The file as text: a regular file only (a pipe or device is never opened for reading), size-limited,
+    read by the deadline (which covers the open), UTF-8 (or UTF-16 with its byte-order mark), no NUL bytes."""
     try:
-        size = path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise SubmissionError(path, f"the file is {size:,} bytes; an answer file may be at most "
-                                        f"{MAX_FILE_BYTES // 1024} KiB")
-        with path.open("rb") as handle:
-            raw = handle.read(MAX_FILE_BYTES + 1)
+        raw = read_bytes(path, MAX_FILE_BYTES, deadline, follow_links=False)
+    except UnsafeFile as exc:
+        raise SubmissionError(path, exc.reason) from None
     except OSError as exc:
         raise SubmissionError(path, f"cannot open the file: {exc.strerror or exc}") from exc
-    if len(raw) > MAX_FILE_BYTES:
-        raise SubmissionError(path, f"an answer file may be at most {MAX_FILE_BYTES // 1024} KiB")
     if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         try:
             return raw.decode("utf-16")

@@ -80,7 +80,7 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
 
 def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir: Path, *, secret_source: str = "",
                  force: bool = False, roster: list[Student] | None = None,
-                 progress: Progress | None = None, jobs: int = 1) -> BatchResult:
+                 progress: Progress | None = None, jobs: int = 1, accept_limits: bool = False) -> BatchResult:
     """Grade the answers to what a manifest records: its questions, its roster (or the part of it given),
     its sheet codes. A different secret, a changed template or solver, or a student never issued a sheet
     stops the run with ManifestError before any mark, unless `force`d (then the batch carries warnings)."""
@@ -91,15 +91,17 @@ def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir:
     if problems and not force:
         raise ManifestError(manifest.path, MISMATCH.format(problems="; ".join(problems)))
     batch = grade_batch(manifest.assignment, bank, secret, submissions_dir, roster=students, progress=progress,
-                        codes=manifest.codes, jobs=jobs)
+                        codes=manifest.codes, jobs=jobs, accept_limits=accept_limits)
     return dataclasses.replace(batch, warnings=tuple(FORCED.format(problem=p) for p in problems))
 
 
 def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_dir: Path,
                 roster: list[Student] | Path | None = None, progress: Progress | None = None,
-                codes: dict[str, str] | None = None, jobs: int = 1) -> BatchResult:
+                codes: dict[str, str] | None = None, jobs: int = 1, accept_limits: bool = False) -> BatchResult:
     """Grade every answer file in a directory; one broken file never stops the rest. `codes` are the
     sheet codes issued, by student (from the manifest); without them each sheet's own code is used.
+    A folder in which the walk reaches a limit (a student's file may be missed there) raises
+    graders.walk.LimitsReached before any file is read, unless `accept_limits`; the batch then carries them.
     With jobs > 1 and at least PARALLEL_FROM files, they are read and graded in that many processes
     (the same results, in the same order)."""
     if isinstance(roster, (str, Path)):
@@ -117,15 +119,16 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
                 return workers[0].map(read_one, paths, chunksize=32)
             return map(read_one, paths)
 
-        entries, problems = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes,
-                                    read_all=read_all)
+        entries, problems, limits = collect(Path(submissions_dir), roster, assignment=assignment.id, codes=codes,
+                                            read_all=read_all, accept_limits=accept_limits)
         pages: dict[str, tuple[SheetResult, str]] = {}
         if workers:
             graded = _keeping_pages(workers[0].map(_grade_in_worker, entries, chunksize=16), pages)
         else:
             graded = (_grade_entry(entry, *shared[:-1], shared[-1].get(entry.student.id)) for entry in entries)
         sheets = _gather(_with_progress(progress, graded, len(entries)), entries, problems, submissions_dir)
-    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages)
+    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages,
+                       limits=tuple(limits))
 
 
 def _grade_in_worker(entry: Entry) -> tuple[SheetResult, str]:

@@ -23,6 +23,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from exgen.errors import SubmissionError
+from exgen.safefile import UnsafeFile, read_bytes
 
 from .echo import shown
 from .formats import MAX_DEPTH, MAX_ENTRIES, Loaded
@@ -67,7 +68,7 @@ class _TooLong(BaseException):
 def load_pdf(path: Path, text: str | None = None, deadline: float | None = None) -> Loaded:
     """The form's values as an answer file's data: {assignment, student, code, answers: {slot: {part: value}}}.
     `text` is unused (a PDF is read from its bytes); `deadline` bounds the whole read."""
-    raw = read_pdf_bytes(path)
+    raw = read_pdf_bytes(path, deadline)
     try:
         with _until(deadline), _quiet_pypdf():
             return _read(path, raw)
@@ -83,19 +84,18 @@ def load_pdf(path: Path, text: str | None = None, deadline: float | None = None)
         raise SubmissionError(path, UNREADABLE.format(reason=_reason(exc))) from None
 
 
-def read_pdf_bytes(path: Path) -> bytes:
-    """The file's bytes, at most MAX_PDF_BYTES, checked to start as a PDF does."""
+def read_pdf_bytes(path: Path, deadline: float | None = None) -> bytes:
+    """The file's bytes, at most MAX_PDF_BYTES, checked to start as a PDF does; as every answer file, a regular
+    file only, opened without blocking, by the deadline (exgen.safefile)."""
     try:
-        size = path.stat().st_size
-        if size > MAX_PDF_BYTES:
-            raise SubmissionError(path, f"the PDF is {size:,} bytes; a sheet may be at most "
-                                        f"{MAX_PDF_BYTES // (1024 * 1024)} MiB")
-        with path.open("rb") as handle:
-            raw = handle.read(MAX_PDF_BYTES + 1)
+        raw = read_bytes(path, MAX_PDF_BYTES, deadline, follow_links=False)
+    except UnsafeFile as exc:
+        if exc.kind == "large":
+            raise SubmissionError(path, f"the PDF is {exc.size:,} bytes or more; a sheet may be at most "
+                                        f"{MAX_PDF_BYTES // (1024 * 1024)} MiB") from None
+        raise SubmissionError(path, exc.reason) from None
     except OSError as exc:
         raise SubmissionError(path, f"cannot open the file: {exc.strerror or exc}") from exc
-    if len(raw) > MAX_PDF_BYTES:
-        raise SubmissionError(path, f"a sheet may be at most {MAX_PDF_BYTES // (1024 * 1024)} MiB")
     if b"%PDF-" not in raw[:1024]:
         raise SubmissionError(path, "not a PDF (it does not start as one does)")
     return raw

@@ -43,7 +43,7 @@ def batch_record(batch: BatchResult, signs: list[dict] | tuple = ()) -> dict:
             "max_points": batch.max_points, "columns": columns, "sheets": sheets,
             "problems": [{"path": _path(p.path), "reason": shown(p.reason, 1000), "student": p.student}
                          for p in batch.problems],
-            "warnings": list(batch.warnings), "signs": list(signs)}
+            "warnings": list(batch.warnings), "limits": list(batch.limits), "signs": list(signs)}
 
 
 def _path(path: Path | None) -> str:

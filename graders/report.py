@@ -171,6 +171,9 @@ def report_page(batch: BatchResult) -> str:
     lines = [f"# Grading report: {_escape(batch.assignment.title)}", ""]
     for warning in batch.warnings:  # graded with --force: impossible to miss
         lines += [f"> **WARNING:** {_escape(warning, 1000)}", ""]
+    for limit in batch.limits:  # graded with --accept-limits: a file past a limit may be missed
+        lines += [f"> **WARNING:** graded with --accept-limits although a limit was reached in the submissions "
+                  f"folder: {_escape(limit, 1000)}; a student's file there may have been missed", ""]
     lines += [f"Sheets: {len(batch.sheets)} ({', '.join(f'{n} {s}' for s, n in sorted(counts.items())) or 'none'})"]
     summary = batch.percent_summary()
     if summary:

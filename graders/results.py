@@ -112,6 +112,8 @@ class BatchResult:
     problems: tuple[FileProblem, ...] = field(default=())
     submissions: Path | None = None  # the directory the answer files came from
     warnings: tuple[str, ...] = ()   # about the whole batch (graded with --force although ...)
+    #: Limits the walk of the submissions folder reached, graded anyway (--accept-limits): graders.walk.
+    limits: tuple[str, ...] = ()
     #: Feedback pages written where the sheets were graded, in parallel: student id -> (the sheet, its page).
     #: graders.report writes the page of a sheet not here, or replaced since, itself.
     pages: Mapping[str, tuple[SheetResult, str]] = field(default_factory=dict, compare=False, repr=False)
@@ -127,7 +129,8 @@ class BatchResult:
         mean = f"; mean {marks[0]:.1f} %, median {marks[1]:.1f} %" if marks else ""
         problems = f"; {len(self.problems)} file(s) not graded" if self.problems else ""
         forced = f" (graded with --force: {len(self.warnings)} warning(s) in the report)" if self.warnings else ""
-        return f"{len(self.sheets)} student(s): {counts}{mean}{problems}{forced}"
+        limits = f" (limits reached: {len(self.limits)}, in the report)" if self.limits else ""
+        return f"{len(self.sheets)} student(s): {counts}{mean}{problems}{forced}{limits}"
 
     def by_status(self) -> dict[str, int]:
         counts: dict[str, int] = {}

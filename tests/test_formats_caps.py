@@ -49,11 +49,11 @@ def test_yaml_events_come_from_libyaml_when_pyyaml_has_it():
     ("a.csv", "q1,a,5 N\n" * 300),
 ])
 def test_reading_stops_at_its_deadline(tmp_path, name, text):
+    """The deadline starts before the file is opened, so it holds for every format (JSON's C scanner,
+    which cannot be interrupted, reads at most the size limit)."""
     path = tmp_path / name
     path.write_text(text, encoding="utf-8")
-    if name.endswith(".json"):  # the C scanner is not interruptible; its input is bounded by the size limit
-        assert read_submission(path, seconds=0).answers == {"q1": {"a": "5 N"}}
-        return
+    assert read_submission(path).answers["q1"]["a"] == "5 N"
     with pytest.raises(SubmissionError, match="took too long to read"):
         read_submission(path, seconds=0)
 

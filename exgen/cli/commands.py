@@ -183,9 +183,12 @@ def cmd_grade(args) -> int:
     from ..generate import default_jobs
 
     batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
-                         progress=_progress, jobs=args.jobs or default_jobs())
+                         progress=_progress, jobs=args.jobs or default_jobs(), accept_limits=args.accept_limits)
     for warning in batch.warnings:
         print(f"WARNING: {warning}", file=sys.stderr)
+    for limit in batch.limits:
+        print(f"WARNING: graded with --accept-limits: {limit}; a student's file there may have been missed",
+              file=sys.stderr)
     from graders.copying import signs_of_copying
 
     signs = signs_of_copying(batch, manifest.assignment, bank, secret, manifest.codes)

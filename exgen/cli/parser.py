@@ -135,6 +135,11 @@ def build_parser() -> argparse.ArgumentParser:
                                                   "core, up to 8; a class under 200 is graded in one)")
     p.add_argument("--force", action="store_true",
                    help="grade even if the secret or a template differs from what was issued (warned in the report)")
+    p.add_argument("--accept-limits", action="store_true",
+                   help="grade even if walking the submissions folder reached a limit (tens of thousands of files "
+                        "in no student's place, folders hundreds of levels down), past which a student's file could "
+                        "be missed; report.md lists what was not looked at. Without it such a run writes nothing "
+                        "and exits with status 1")
     p.add_argument("--canvas-id", type=_digits, help="the Canvas assignment's id, for the Canvas gradebook's column "
                                                      "(without it, importing makes a new assignment)")
     p.set_defaults(func=cmd_grade)
