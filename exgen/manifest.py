@@ -16,6 +16,7 @@ from . import __version__
 from .assignment import Assignment, QuestionSpec, Sheet, Student
 from .bank import Bank
 from .errors import ExgenError
+from .outdir import recover
 from .seeds import fingerprint, legacy_fingerprint
 from .versions import LIBRARIES, current_hash, file_hashes, template_version
 
@@ -89,8 +90,11 @@ def write_manifest(manifest: dict, path: Path) -> None:
 
 
 def manifest_path(issued: Path) -> Path:
-    """The manifest of an issued folder (the --out of `exgen generate`), or the file itself."""
+    """The manifest of an issued folder (the --out of `exgen generate`), or the file itself. A folder an
+    interrupted rerun left aside is put back first (exgen.outdir.recover)."""
     issued = Path(issued)
+    if not issued.exists():
+        recover(issued.parent if issued.name == MANIFEST else issued)
     if issued.is_dir():
         return issued / MANIFEST
     if issued.suffix.lower() in (".yaml", ".yml"):

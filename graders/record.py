@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 from exgen.errors import ExgenError
+from exgen.outdir import recover
 
 from .echo import shown
 from .results import BatchResult
@@ -58,6 +59,8 @@ def write_record(record: dict, path: Path) -> None:
 
 def read_record(folder: Path) -> dict:
     """results.json of a folder `exgen grade` wrote; ExgenError says what is wrong."""
+    if not Path(folder).exists():  # an interrupted rerun may have left it aside
+        recover(Path(folder).parent if Path(folder).name == RESULTS else Path(folder))
     path = Path(folder) / RESULTS if Path(folder).is_dir() else Path(folder)
     try:
         record = json.loads(path.read_text(encoding="utf-8"))

@@ -9,10 +9,13 @@ fits. Only a cache: what is taken is checked against what the student has met li
 from __future__ import annotations
 
 import multiprocessing
+import os
 import threading
 from functools import lru_cache
 from pathlib import Path
 
+from exgen.interrupts import held
+from exgen.parallel import watch_parent
 from exgen.seeds import practice_seed
 from exgen.template import Template
 
@@ -38,7 +41,9 @@ class Ahead:
         self._pending: set[str] = set()
         self._lock = threading.Lock()
         # a spawned daemon: a fresh interpreter (no copy of the server's threads), ended with the server
-        self._worker = multiprocessing.get_context("spawn").Pool(1)
+        with held():  # a worker half started would be one nobody stops
+            self._worker = multiprocessing.get_context("spawn").Pool(1, initializer=watch_parent,
+                                                                     initargs=(os.getpid(),))
         self._closed = False
 
     def fill(self, templates) -> None:

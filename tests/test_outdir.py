@@ -1,5 +1,6 @@
 """Never half-write: generate and grade build their output beside the target and swap it in when
 complete; an error or interruption leaves the previous output whole; only exgen's own outputs are replaced."""
+import os
 from pathlib import Path
 
 import pytest
@@ -106,3 +107,50 @@ def test_grading_results_replace_only_grading_results(tutorial, bank, tmp_path):
     generate(tutorial, ROSTER_B, bank, SECRET, tmp_path / "issued", pdf=False)
     with pytest.raises(OutputError, match="holds the output of `exgen generate`"):
         write_results(batch, tmp_path / "issued")
+
+
+def test_staging_folders_of_earlier_runs_are_removed_or_named(tmp_path):
+    """Folders of interrupted runs stayed for ever (up to 21 MB, one with a complete-looking gradebook),
+    and nothing cleaned or mentioned them."""
+    import json
+    import subprocess
+    import sys
+
+    from exgen.outdir import WRITER, tidy
+
+    target = tmp_path / "out"
+    ended = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    dead = int(ended.stdout)
+    folders = {
+        "dead": tmp_path / f".out.writing-{dead}-abc123",
+        "dead, aside": tmp_path / f".out.old-{dead}-def456",
+        "running": tmp_path / f".out.writing-{os.getppid()}-ghi789",
+        "elsewhere": tmp_path / f".out.writing-{dead}-jkl012",
+        "earlier": tmp_path / ".out.writing-mno345",
+    }
+    for folder in folders.values():
+        folder.mkdir()
+        (folder / "gradebook.csv").write_text("student,total\n")
+    (folders["elsewhere"] / WRITER).write_text(json.dumps({"pid": dead, "host": "another-computer.example"}))
+    target.mkdir()
+    notes = tidy(target)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        ["out", folders["running"].name, folders["elsewhere"].name, folders["earlier"].name])
+    assert f"removed {folders['dead']}, left by an interrupted run (process {dead}, no longer running)" in notes
+    assert any(str(folders["dead, aside"]) in n and "removed" in n for n in notes)
+    assert any(str(folders["running"]) in n and "still running" in n for n in notes)
+    assert any(str(folders["elsewhere"]) in n and "another-computer.example" in n for n in notes)
+    assert any(str(folders["earlier"]) in n and "earlier exgen" in n for n in notes)
+    assert len(notes) == 5
+
+
+def test_the_output_is_swapped_in_one_step_where_the_system_can(tmp_path):
+    from exgen.outdir import _exchange
+
+    (tmp_path / "a").mkdir()
+    (tmp_path / "a" / "old").write_text("old")
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "new").write_text("new")
+    if not _exchange(tmp_path / "a", tmp_path / "b"):
+        pytest.skip("this system or file system cannot exchange two folders in one step")
+    assert [p.name for p in (tmp_path / "a").iterdir()] == ["new"] and [p.name for p in (tmp_path / "b").iterdir()] == ["old"]

@@ -1,11 +1,14 @@
 """The `exgen` command: parses arguments, calls the library, prints. Errors meant for the user
-are printed as one message (no traceback) with exit status 1."""
+are printed as one message (no traceback) with exit status 1. SIGTERM (a `timeout`, a CI job cancelled)
+is taken like Ctrl+C: what was being written is removed, the workers end, and the status is 143."""
 from __future__ import annotations
 
 import os
+import signal
 import sys
 
 from ..errors import ExgenError
+from ..interrupts import Terminated, handled
 from .commands import solution_json
 from .parser import build_parser
 
@@ -15,9 +18,13 @@ __all__ = ["build_parser", "main", "solution_json"]
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
-        status = args.func(args)
+        with handled():
+            status = args.func(args)
         sys.stdout.flush()  # a reader that went away (`exgen list | head`) shows here, not at exit
         return status
+    except Terminated:
+        print("exgen: terminated", file=sys.stderr)
+        return 128 + signal.SIGTERM
     except BrokenPipeError:
         return _reader_gone()
     except ExgenError as exc:

@@ -45,6 +45,14 @@ def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
     return secret, source
 
 
+def _tidy(out: Path) -> None:
+    """What interrupted runs left beside the output folder: removed, or named."""
+    from ..outdir import tidy
+
+    for note in tidy(out):
+        print(f"note: {note}", file=sys.stderr)
+
+
 def _assignment_and_roster(args):
     """The bank, the assignment (checked against it) and the roster path (option, else the file's)."""
     from ..assignment import load_assignment
@@ -148,6 +156,7 @@ def cmd_generate(args) -> int:
         raise ExgenError("--print joins the sheets' PDFs: leave out --no-pdf")
     secret, source = _secret(args, assignment.secret_file, create=True)
     recorded = source if source.startswith("$") else str(Path(source).resolve())
+    _tidy(Path(args.out))
     issued = generate(assignment, students, bank, secret, Path(args.out), pdf=not args.no_pdf,
                       key_pdf=not args.no_key_pdf, jobs=args.jobs or default_jobs(), progress=_progress,
                       secret_source=recorded, print_bundle=args.print)
@@ -174,6 +183,7 @@ def cmd_grade(args) -> int:
     if not submissions.is_dir():
         raise ExgenError(f"{submissions}: no such folder" if not submissions.exists() else
                          f"{submissions}: not a folder: give the folder holding the answer files")
+    _tidy(Path(args.out))
     check_target(Path(args.out), "grade")  # before any work: a folder that cannot be replaced stops here
     bank = _bank(args)
     recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \
