@@ -13,8 +13,6 @@ from functools import lru_cache, partial
 from importlib import resources
 from pathlib import Path
 
-import yaml
-
 from . import expr
 from .answertypes import answer_type, names as answer_type_names
 from .domains import domain_of, drawn_values, parse_domain
@@ -22,6 +20,7 @@ from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .template import MistakeSpec, ParamSpec, PartSpec, ReportSpec, Template
 from .text import undeclared_names
 from .versions import data_digest
+from .yamlfile import YamlFileError, place, read_yaml
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
@@ -91,13 +90,11 @@ def _load_bank(dirs: tuple[Path, ...], full: bool = True) -> Bank:
 
 def load_template(path: Path, full: bool = True) -> Template:
     """Read one template file, raising BankError with every problem found in it (`full`: see load_bank)."""
-    raw = path.read_bytes()
     try:
-        root, data = _parse(raw.decode("utf-8"))
-    except (UnicodeDecodeError, yaml.YAMLError) as exc:
-        line = getattr(getattr(exc, "problem_mark", None), "line", None)
-        raise BankError([TemplateError(path, "", f"not valid YAML: {exc}", line + 1 if line is not None else None)]) from exc
-    reader = _Reader(path, root, full)
+        root, data = read_yaml(path, "a template file")
+    except YamlFileError as exc:
+        raise BankError([TemplateError(path, "", exc.detail, exc.line, exc.column)]) from None
+    reader = _Reader(path, root, full, data)
     template = reader.template(data, data_digest(_issued(data)))
     if reader.errors:
         raise BankError(reader.errors)
@@ -113,18 +110,46 @@ def _issued(data):
     return {**data, "parts": parts}
 
 
-#: libyaml's safe loader when PyYAML was built with it (10x faster), else the pure-Python one.
-_SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+#: A list's items, as an author names them ("part (b)", "mistake 2"), and whether the list's key is said too
+#: ("require, condition 1").
+_ITEMS = {"parts": ("part", False), "mistakes": ("mistake", False), "hints": ("hint", False),
+          "require": ("condition", True), "report": ("entry", True), "key_figures": ("figure", True)}
 
 
-def _parse(text: str):
-    """The node tree (for line numbers) and the data, from one safe parse."""
-    loader = _SafeLoader(text)
-    try:
-        root = loader.get_single_node()
-        return root, (loader.construct_document(root) if root is not None else None)
-    finally:
-        loader.dispose()
+def key_words(keypath: tuple, data=None) -> str:
+    """A key path as an author reads it: ("parts", 1, "tol", "rel") -> "part (b), tol.rel" (a part by its
+    id where it has one), ("params", "N1", "step") -> "parameter N1, step"; items are counted from 1."""
+    words, pending, node, i = [], [], data, 0
+    while i < len(keypath):
+        key = keypath[i]
+        if key == "params" and not pending and i + 1 < len(keypath):
+            words.append(f"parameter {keypath[i + 1]}")
+            node, i = _child(_child(node, key), keypath[i + 1]), i + 2
+            continue
+        node = _child(node, key)
+        if isinstance(key, int):
+            label, said = _ITEMS.get(pending[-1] if pending else "", ("item", True))
+            if pending and not said:
+                pending.pop()
+            if pending:
+                words.append(".".join(pending))
+                pending = []
+            part_id = node.get("id") if label == "part" and isinstance(node, dict) else None
+            words.append(f"{label} ({part_id})" if part_id else f"{label} {key + 1}")
+        else:
+            pending.append(str(key))
+        i += 1
+    if pending:
+        words.append(".".join(pending))
+    return ", ".join(words)
+
+
+def _child(node, key):
+    if isinstance(node, dict):
+        return node.get(key)
+    if isinstance(node, list) and isinstance(key, int) and 0 <= key < len(node):
+        return node[key]
+    return None
 
 
 def _is_text(spec: ParamSpec) -> bool:
@@ -134,28 +159,13 @@ def _is_text(spec: ParamSpec) -> bool:
 class _Reader:
     """Turns parsed YAML into a Template, collecting errors with their lines."""
 
-    def __init__(self, path: Path, root, full: bool = True):
-        self.path, self.root, self.errors, self.full = path, root, [], full
+    def __init__(self, path: Path, root, full: bool = True, data=None):
+        self.path, self.root, self.errors, self.full, self.data = path, root, [], full, data
 
     def error(self, keypath: tuple, message: str) -> None:
         key = ".".join(str(k) for k in keypath)
-        self.errors.append(TemplateError(self.path, key, message, self._line(keypath)))
-
-    def _line(self, keypath: tuple) -> int | None:
-        node, line = self.root, None
-        for key in keypath:
-            if isinstance(node, yaml.MappingNode):
-                match = next(((k, v) for k, v in node.value if k.value == str(key)), None)
-                if match is None:
-                    break
-                node = match[1]
-                line = match[0].start_mark.line + 1
-            elif isinstance(node, yaml.SequenceNode) and isinstance(key, int) and key < len(node.value):
-                node = node.value[key]
-                line = node.start_mark.line + 1
-            else:
-                break
-        return line
+        line, column = place(self.root, keypath)
+        self.errors.append(TemplateError(self.path, key, message, line, column, key_words(keypath, self.data)))
 
     def error_below(self, keypath: tuple, keys: tuple, message: str) -> None:
         self.error(keypath + keys, message)

@@ -13,12 +13,15 @@ class ExgenError(Exception):
 
 
 class TemplateError(ExgenError, ValueError):
-    """A template file that cannot be used; names the file and the key."""
+    """A template file that cannot be used; names the file, the line and column, and the key (`words`: the
+    key as an author reads it, "part (b), tol", where `key` is "parts.1.tol")."""
 
-    def __init__(self, path, key: str, message: str, line: int | None = None):
-        self.path, self.key, self.line, self.detail = str(path), key, line, message
-        where = f"{self.path}:{line}" if line else self.path
-        super().__init__(f"{where}: {key}: {message}" if key else f"{where}: {message}")
+    def __init__(self, path, key: str, message: str, line: int | None = None, column: int | None = None,
+                 words: str | None = None):
+        self.path, self.key, self.line, self.column, self.detail = str(path), key, line, column, message
+        said = words if words is not None else key
+        where = _where(self.path, line, column)
+        super().__init__(f"{where}: {said}: {message}" if said else f"{where}: {message}")
 
 
 class BankError(ExgenError, ValueError):
@@ -106,12 +109,20 @@ def _article(word: str) -> str:
 
 
 class AssignmentError(ExgenError, ValueError):
-    """An assignment file or roster that cannot be used; names the file and the problem."""
+    """An assignment file or roster that cannot be used; names the file, the line and column where known,
+    and the problem (several problems: one line each)."""
 
-    def __init__(self, path, message: str, line: int | None = None):
-        self.path, self.line = str(path), line
-        where = f"{self.path}:{line}" if line else self.path
-        super().__init__(f"{where}: {message}")
+    def __init__(self, path, message: str, line: int | None = None, column: int | None = None,
+                 more: tuple[tuple[str, int | None, int | None], ...] = ()):
+        self.path, self.line, self.column, self.detail = str(path), line, column, message
+        self.problems = ((message, line, column), *more)
+        lines = [f"{_where(self.path, ln, col)}: {text}" for text, ln, col in self.problems]
+        head = f"{len(lines)} problems in {self.path}:\n  " if more else ""
+        super().__init__(head + "\n  ".join(lines))
+
+
+def _where(path: str, line: int | None, column: int | None) -> str:
+    return (f"{path}:{line}:{column}" if column else f"{path}:{line}") if line else path
 
 
 class SecretError(ExgenError, RuntimeError):

@@ -1,5 +1,6 @@
 """Every answer type, through the registry: found, loaded from YAML with file:line errors, read safely,
 and one tolerance rule for what the key prints and what the grader applies."""
+import re
 from pathlib import Path
 
 import pytest
@@ -101,24 +102,24 @@ def test_sig_with_an_absolute_floor(tmp_path):
 
 
 @pytest.mark.parametrize("part, message", [
-    ("tol: {sig: 3, rel: 0.01}", "parts.0.tol: give `rel` or `sig`, not both"),
-    ("tol: {sig: 2.5}", "parts.0.tol.sig: must be a whole number of figures from 1 to 15"),
-    ("tol: {sig: 0}", "parts.0.tol.sig: must be a whole number of figures from 1 to 15"),
-    ("tol: {rel: 0.01, deg: 1}", "parts.0.tol.deg: not a tolerance of a number answer; expected one of rel, abs, sig"),
-    ("type: angle, tol: {sig: 3}", "parts.0.tol.sig: not a tolerance of an angle answer; expected one of rel, abs"),
-    ("type: integer, tol: {rel: 0.01}", "parts.0.tol: an integer answer is graded exactly; remove `tol:`"),
-    ("type: choice", "parts.0.choices: a choice answer needs its list of choices"),
-    ("type: polar", "parts.0.angle: a polar answer needs `angle:`, the step holding its angle"),
-    ("choices: [a, b]", "parts.0.choices: unknown key"),
-    ("tol: 0.01", "parts.0.tol: must be a mapping such as {rel: 0.01}"),
+    ("tol: {sig: 3, rel: 0.01}", "part (a), tol: give `rel` or `sig`, not both"),
+    ("tol: {sig: 2.5}", "part (a), tol.sig: must be a whole number of figures from 1 to 15"),
+    ("tol: {sig: 0}", "part (a), tol.sig: must be a whole number of figures from 1 to 15"),
+    ("tol: {rel: 0.01, deg: 1}", "part (a), tol.deg: not a tolerance of a number answer; expected one of rel, abs, sig"),
+    ("type: angle, tol: {sig: 3}", "part (a), tol.sig: not a tolerance of an angle answer; expected one of rel, abs"),
+    ("type: integer, tol: {rel: 0.01}", "part (a), tol: an integer answer is graded exactly; remove `tol:`"),
+    ("type: choice", "part (a), choices: a choice answer needs its list of choices"),
+    ("type: polar", "part (a), angle: a polar answer needs `angle:`, the step holding its angle"),
+    ("choices: [a, b]", "part (a), choices: unknown key"),
+    ("tol: 0.01", "part (a), tol: must be a mapping such as {rel: 0.01}"),
 ])
-def test_a_type_checks_its_own_keys_with_file_and_line(tmp_path, part, message):
+def test_a_type_checks_its_own_keys_with_file_line_and_column(tmp_path, part, message):
     found = problems(tmp_path, part)
-    assert any(f"t.yaml:13: {message}" in p for p in found), found
+    assert any(re.search(rf"t\.yaml:13:\d+: {re.escape(message)}", p) for p in found), found
 
 
 def test_defaults_come_from_the_type(tmp_path):
-    assert load(tmp_path, "unit: rpm").part("a").tol == answer_type("number").default_tol
+    assert load(tmp_path, "points: 1").part("a").tol == answer_type("number").default_tol
     assert load(tmp_path, "type: angle").part("a").tol == answer_type("angle").default_tol
     assert PartSpec("a", "x", "v").tol == answer_type("number").default_tol
 

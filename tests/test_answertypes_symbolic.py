@@ -182,7 +182,7 @@ def test_the_part_is_checked_at_load(tmp_path, monkeypatch, symbols, message):
     monkeypatch.setitem(sys.modules, "exgen.solvers.symbolic_fixture", symbolic_fixture)
     with pytest.raises(BankError) as info:
         load_template(path)
-    assert any(message in str(e) and re.search(r"t\.yaml:\d+: parts\.0\.", str(e)) for e in info.value.errors)
+    assert any(message in str(e) and re.search(r"t\.yaml:\d+:\d+: part \(\w+\), ", str(e)) for e in info.value.errors)
 
 
 # ---- the fixture template, end to end --------------------------------------------------------------

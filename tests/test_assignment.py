@@ -19,7 +19,7 @@ def test_a_slot_that_is_not_a_plain_name_is_refused(tmp_path, bank, slot):
     path = write(tmp_path, f'  - {{template: belts.drive_geometry, slot: "{slot}"}}\n')
     with pytest.raises(AssignmentError, match="slot") as caught:
         load_assignment(path, bank)
-    assert str(path) in str(caught.value) and "questions[1]" in str(caught.value)
+    assert str(path) in str(caught.value) and "question 1 (line 4)" in str(caught.value)
 
 
 @pytest.mark.parametrize("points", [".nan", ".inf", "-.inf", "0", "-2", "true", "'5'", "[5]"])

@@ -45,26 +45,26 @@ def test_good_template_loads(tmp_path):
 
 @pytest.mark.parametrize("old, new, expected", [
     ("title: A good template\n", "", "t.yaml: title: is required"),
-    ("chapter: 1", "chapter: one", "t.yaml:3: chapter: must be a whole number"),
-    ("solver: belts:driven_speed", "solver: belts:no_such", "t.yaml:4: solver: exgen.solvers.belts has no function 'no_such'"),
-    ("solver: belts:driven_speed", "solver: os:system", "t.yaml:4: solver: no module exgen.solvers.os"),
-    ("step: 20, unit: rpm", "step: 7, unit: rpm", "t.yaml:6: params.N1.step: (max - min) = 1080 is not a whole number of steps of 7"),
-    ("min: 20, max: 50", "min: 50, max: 20", "t.yaml:7: params.d1: needs min <= max and step > 0"),
-    ("{min: 40, max: 120, step: 5, unit: cm}", "{min: 40, max: 120, stp: 5, unit: cm}", "t.yaml:8: params.d2.stp: unknown key"),
-    ('["d2 > d1"]', '["d2 > d9"]', "t.yaml:12: require.0: names no parameter: d9"),
-    ('["d2 > d1"]', '["d2 >"]', "t.yaml:12: require.0: cannot read 'd2 >' as an expression"),
-    ("{{ d1 }}.", "{{ d3 }}.", "t.yaml:13: statement: refers to unknown parameter(s): d3"),
-    ("{{ d1 }}.", "{{ d1 }.", "t.yaml:13: statement: template syntax error on line 1"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, type: vector}", "t.yaml:15: parts.0.type: 'vector' is not one of"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, uses: [b]}", "t.yaml:15: parts.0.uses: 'b' is not an earlier part"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, tol: {rel: -1}}", "t.yaml:15: parts.0.tol.rel: must be a number >= 0"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, points: 0}", "t.yaml:15: parts.0.points: must be a positive number"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: first}", "t.yaml:15: parts.0.hints: must be a list of hint"),
-    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: [ok, 3]}", "t.yaml:15: parts.0.hints: must be a list of hint"),
+    ("chapter: 1", "chapter: one", "t.yaml:3:1: chapter: must be a whole number"),
+    ("solver: belts:driven_speed", "solver: belts:no_such", "t.yaml:4:1: solver: exgen.solvers.belts has no function 'no_such'"),
+    ("solver: belts:driven_speed", "solver: os:system", "t.yaml:4:1: solver: no module exgen.solvers.os"),
+    ("step: 20, unit: rpm", "step: 7, unit: rpm", "t.yaml:6:29: parameter N1, step: (max - min) = 1080 is not a whole number of steps of 7"),
+    ("min: 20, max: 50", "min: 50, max: 20", "t.yaml:7:3: parameter d1: needs min <= max and step > 0"),
+    ("{min: 40, max: 120, step: 5, unit: cm}", "{min: 40, max: 120, stp: 5, unit: cm}", "t.yaml:8:27: parameter d2, stp: unknown key"),
+    ('["d2 > d1"]', '["d2 > d9"]', "t.yaml:12:11: require, condition 1: names no parameter: d9"),
+    ('["d2 > d1"]', '["d2 >"]', "t.yaml:12:11: require, condition 1: cannot read 'd2 >' as an expression"),
+    ("{{ d1 }}.", "{{ d3 }}.", "t.yaml:13:1: statement: refers to unknown parameter(s): d3"),
+    ("{{ d1 }}.", "{{ d1 }.", "t.yaml:13:1: statement: template syntax error on line 1"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, type: vector}", "t.yaml:15:57: part (a), type: 'vector' is not one of"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, uses: [b]}", "t.yaml:15:57: part (a), uses: 'b' is not an earlier part"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, tol: {rel: -1}}", "t.yaml:15:63: part (a), tol.rel: must be a number >= 0"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, points: 0}", "t.yaml:15:57: part (a), points: must be a positive number"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: first}", "t.yaml:15:57: part (a), hints: must be a list of hint"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: [ok, 3]}", "t.yaml:15:57: part (a), hints: must be a list of hint"),
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: ['{{ d9 }}']}",
-     "t.yaml:15: parts.0.hints.0: refers to unknown parameter(s): d9"),
+     "t.yaml:15:65: part (a), hint 1: refers to unknown parameter(s): d9"),
 ])
-def test_each_problem_names_file_key_and_line(tmp_path, old, new, expected):
+def test_each_problem_names_file_line_column_and_key_as_an_author_reads_it(tmp_path, old, new, expected):
     assert old in GOOD
     found = problems(write(tmp_path, GOOD.replace(old, new)))
     assert any(expected in p for p in found), found

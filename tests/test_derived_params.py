@@ -1,4 +1,5 @@
 """Parameters worked out from others (`equals:`): exact, printed like any given, checked when loading."""
+import re
 from decimal import Decimal
 from pathlib import Path
 
@@ -59,14 +60,14 @@ def test_solve_works_it_out_and_checks_a_value_given_for_it(tmp_path):
 
 
 @pytest.mark.parametrize("formula, expected", [
-    ('"2 * d9"', "params.d2.equals: names no earlier numeric parameter: d9"),
-    ('"2 * G1x"', "params.d2.equals: names no earlier numeric parameter: G1x"),
-    ('"2 *"', "params.d2.equals: cannot read '2 *' as an expression"),
+    ('"2 * d9"', "parameter d2, equals: names no earlier numeric parameter: d9"),
+    ('"2 * G1x"', "parameter d2, equals: names no earlier numeric parameter: G1x"),
+    ('"2 *"', "parameter d2, equals: cannot read '2 *' as an expression"),
 ])
 def test_a_bad_formula_names_the_key_and_line(tmp_path, formula, expected):
     with pytest.raises(BankError) as info:
         load(tmp_path, TEMPLATE.replace('"2 * d1 + 10.25"', formula))
-    assert any(expected in str(e) and ":8:" in str(e) for e in info.value.errors), info.value.errors
+    assert any(expected in str(e) and re.search(r":8:\d+: ", str(e)) for e in info.value.errors), info.value.errors
 
 
 def test_a_derived_parameter_may_use_only_earlier_ones(tmp_path):

@@ -114,13 +114,13 @@ def test_a_name_neither_parameter_nor_step_is_the_templates_error(tmp_path):
 
 
 @pytest.mark.parametrize("entry, message", [
-    ("  - {what: x, value: m / A, unit: kg/m^3, range: [1500, 1000]}", "report.0.range: must be [low, high] with low < high"),
-    ("  - {what: x, value: m / A, unit: kg/m^3, range: 1000}", "report.0.range: must be [low, high]"),
-    ("  - {what: x, value: m / A, unit: blorps/m^7, range: [1, 2]}", "report.0.unit: unknown unit"),
-    ("  - {what: x, value: 'm /', unit: kg/m^3, range: [1, 2]}", "report.0.value: cannot read"),
-    ("  - {value: m / A, unit: kg/m^3, range: [1, 2]}", "report.0.what: is required"),
-    ("  - {what: x, value: m / A, range: [1, 2], why: because}", "report.0.why: unknown key"),
-    ("  - belt density", "report.0: must be a mapping"),
+    ("  - {what: x, value: m / A, unit: kg/m^3, range: [1500, 1000]}", "report, entry 1, range: must be [low, high] with low < high"),
+    ("  - {what: x, value: m / A, unit: kg/m^3, range: 1000}", "report, entry 1, range: must be [low, high]"),
+    ("  - {what: x, value: m / A, unit: blorps/m^7, range: [1, 2]}", "report, entry 1, unit: unknown unit"),
+    ("  - {what: x, value: 'm /', unit: kg/m^3, range: [1, 2]}", "report, entry 1, value: cannot read"),
+    ("  - {value: m / A, unit: kg/m^3, range: [1, 2]}", "report, entry 1, what: is required"),
+    ("  - {what: x, value: m / A, range: [1, 2], why: because}", "report, entry 1, why: unknown key"),
+    ("  - belt density", "report, entry 1: must be a mapping"),
 ])
 def test_a_malformed_report_names_the_file_key_and_line(tmp_path, entry, message):
     with pytest.raises(BankError) as caught:
