@@ -6,9 +6,7 @@ same sheet can be rebuilt at grading time from the same three inputs.
 """
 from __future__ import annotations
 
-import csv
 import difflib
-import io
 import math
 import re
 from dataclasses import dataclass, field
@@ -194,35 +192,6 @@ def _shown(value, limit: int = 40) -> str:
 def _positive_number(value) -> bool:
     """True for 3 or 2.5; False for 0, -1, .nan, .inf, true and text."""
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value) and value > 0
-
-
-def load_roster(path: Path) -> list[Student]:
-    """Students from a CSV with an `id` column (and optional name, email, section)."""
-    try:
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise AssignmentError(path, "no such roster file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AssignmentError(path, f"cannot read roster: {exc}") from exc
-    reader = csv.DictReader(io.StringIO(text))
-    fields = [f.strip().lower() for f in reader.fieldnames or []]
-    if "id" not in fields:
-        raise AssignmentError(path, f"the roster needs an `id` column (found: {', '.join(fields) or 'nothing'})", 1)
-    students, seen = [], set()
-    for line, row in enumerate(reader, start=2):
-        row = {(k or "").strip().lower(): (v or "").strip() for k, v in row.items()}
-        if not any(row.values()):
-            continue
-        sid = row.get("id", "")
-        if not _SAFE_ID.match(sid):
-            raise AssignmentError(path, f"student id {sid!r} must be letters, digits, '.', '_' or '-' (it names files)", line)
-        if sid in seen:
-            raise AssignmentError(path, f"student id {sid!r} appears twice", line)
-        seen.add(sid)
-        students.append(Student(sid, row.get("name", ""), row.get("email", ""), row.get("section", "")))
-    if not students:
-        raise AssignmentError(path, "the roster lists no students")
-    return students
 
 
 def build_sheet(assignment: Assignment, student: Student, bank: Bank, secret: bytes) -> Sheet:

@@ -14,7 +14,8 @@ from pathlib import Path
 from typing import Callable, Iterable, Iterator, Mapping
 
 from exgen import parallel
-from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet, load_roster
+from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet
+from exgen.roster import load_roster
 from exgen.bank import Bank
 from exgen.errors import ExgenError
 from exgen.manifest import Manifest, ManifestError, issue_mismatches

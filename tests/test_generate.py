@@ -4,7 +4,8 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import load_assignment, load_roster
+from exgen.assignment import load_assignment
+from exgen.roster import load_roster
 from exgen.generate import generate
 from exgen.seeds import derive_seed
 from exgen.versions import template_version

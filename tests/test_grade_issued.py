@@ -8,7 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import Student, load_assignment, load_roster
+from exgen.assignment import Student, load_assignment
+from exgen.roster import load_roster
 from exgen.bank import Bank, load_template
 from exgen.cli import main
 from exgen.generate import generate

@@ -53,6 +53,18 @@ def _tidy(out: Path) -> None:
         print(f"note: {note}", file=sys.stderr)
 
 
+def _roster(path: Path) -> list:
+    """The roster's students; which columns were read, when a learning system named them."""
+    from ..roster import read_roster
+
+    roster = read_roster(path)
+    read = [f"{field}s from `{header}`" for field, header in roster.columns.items()
+            if header.strip().lower() != field]
+    if read:
+        print(f"note: {path}: {', '.join(read)}", file=sys.stderr)
+    return list(roster.students)
+
+
 def _assignment_and_roster(args):
     """The bank, the assignment (checked against it) and the roster path (option, else the file's)."""
     from ..assignment import load_assignment
@@ -145,13 +157,12 @@ def solution_json(variant) -> dict:
 
 
 def cmd_generate(args) -> int:
-    from ..assignment import load_roster
     from ..generate import default_jobs, generate
 
     bank, assignment, roster_path = _assignment_and_roster(args)
     if roster_path is None:
         raise ExgenError("give the class list with --roster ROSTER.csv (or `roster:` in the assignment file)")
-    students = load_roster(roster_path)
+    students = _roster(roster_path)
     if args.print and args.no_pdf:
         raise ExgenError("--print joins the sheets' PDFs: leave out --no-pdf")
     secret, source = _secret(args, assignment.secret_file, create=True)
@@ -174,7 +185,6 @@ def cmd_grade(args) -> int:
     from graders.grade import grade_issued
     from graders.report import write_results
 
-    from ..assignment import load_roster
     from ..manifest import read_manifest
     from ..outdir import check_target
 
@@ -189,7 +199,7 @@ def cmd_grade(args) -> int:
     recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \
         else None
     secret, source = _secret(args, recorded, create=False)
-    roster = load_roster(Path(args.roster)) if args.roster else None
+    roster = _roster(Path(args.roster)) if args.roster else None
     from ..generate import default_jobs
 
     batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
