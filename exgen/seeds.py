@@ -19,6 +19,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from .errors import SecretError
+from .safefile import UnsafeFile, read_bytes
 
 ENV_VAR = "EXGEN_SECRET"
 MIN_SECRET_BYTES = 16
@@ -28,6 +29,10 @@ MIN_SECRET_BITS = 80
 _SCRYPT = {"n": 2**15, "r": 8, "p": 1, "maxmem": 64 * 2**20, "dklen": 32}
 _CHECK_SALT = b"exgen: sheet codes and secret fingerprints"
 MAKE_ONE = "python3 -c 'import secrets; print(secrets.token_hex(32))'"
+#: A secret file holds one line; exgen writes 65 bytes.
+MAX_SECRET_FILE = 1024
+_NOT_A_SECRET = ("{path} does not look like a course secret ({why}): a course secret file holds one line, as the "
+                 "file exgen creates does; give that file, or make one with: {make} > FILE")
 
 
 #: Seeds of sheets are HMAC outputs below 2^64 (`derive_seed`); practice draws its seeds from the next
@@ -128,15 +133,55 @@ def load_secret(path: Path | None, *, create: bool = False, explicit: bool = Fal
 
 
 def _read(path: Path) -> bytes:
+    """A secret file's secret: one line of text, as exgen writes it; anything else is refused, since a file
+    given by mistake (/etc/passwd, a key, a spreadsheet) would silently seed every sheet."""
     if path.is_dir():
         raise SecretError(f"{path} is a folder, not a secret file")
     try:
-        return path.read_bytes().strip()
+        raw = read_bytes(path, MAX_SECRET_FILE)
     except FileNotFoundError:
         raise SecretError(f"no course secret: {path} does not exist (and {ENV_VAR} is not set). "
                           "Grading needs the same secret that generated the sheets.") from None
+    except UnsafeFile as exc:
+        raise SecretError(_NOT_A_SECRET.format(path=path, why=exc.reason, make=MAKE_ONE)) from None
     except OSError as exc:
         raise SecretError(f"cannot read the secret file {path}: {exc.strerror or exc}") from None
+    secret = raw.strip()
+    why = _not_a_secret(secret)
+    if why:
+        raise SecretError(_NOT_A_SECRET.format(path=path, why=why, make=MAKE_ONE))
+    return secret
+
+
+def _not_a_secret(secret: bytes) -> str:
+    """Why the bytes of a secret file cannot be a course secret (one line of text), or ""."""
+    if b"\x00" in secret:
+        return "it holds NUL bytes, so it is no text"
+    try:
+        text = secret.decode("utf-8")
+    except UnicodeDecodeError:
+        return "it is not text"
+    lines = text.splitlines()
+    if len(lines) > 1:
+        return f"it has {len(lines)} lines"
+    if not text.isprintable():
+        return "it holds control characters"
+    return ""
+
+
+def exposure(path: Path) -> str:
+    """A warning if the secret file can be read (or changed) by other users of this computer, else ""."""
+    if os.name != "posix":
+        return ""
+    try:
+        mode = path.stat().st_mode
+    except OSError:
+        return ""
+    if not mode & 0o077:
+        return ""
+    who = "other users of this computer" if mode & 0o007 else "the other members of its group"
+    return (f"the secret file {path} can be read by {who} (mode {mode & 0o777:04o}): whoever reads it can rebuild "
+            f"every student's answers; make it private with: chmod 600 {path}")
 
 
 def _create(path: Path) -> bytes:

@@ -115,3 +115,61 @@ def test_a_folder_given_as_the_secret_file_is_a_clear_error(monkeypatch, tmp_pat
     monkeypatch.delenv("EXGEN_SECRET", raising=False)
     with pytest.raises(SecretError, match="is a folder, not a secret file"):
         load_secret(tmp_path, explicit=True, create=True)
+
+
+@pytest.mark.parametrize("content, why", [
+    (b"root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1:daemon:/usr/sbin:/usr/sbin/nologin\n", "it has 2 lines"),
+    (b"-----BEGIN OPENSSH PRIVATE KEY-----\nb3BlbnNzaC1rZXktdjEAAAAABG5vbmU\n-----END OPENSSH PRIVATE KEY-----\n",
+     "it has 3 lines"),
+    (bytes(range(256)), "NUL bytes"), (b"\xff\xfe\xfd" * 20, "it is not text"),
+    (b"x" * 5000, "more than the 1 KiB allowed"), (b"a long secret\x07with a bell in it", "control characters"),
+])
+def test_a_file_that_is_no_course_secret_is_refused_in_one_line(monkeypatch, tmp_path, content, why):
+    """`secret_file: /etc/passwd` was accepted: long and varied enough to pass as a strong secret."""
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    path = tmp_path / "course.secret"
+    path.write_bytes(content)
+    with pytest.raises(SecretError) as caught:
+        load_secret(path, explicit=True)
+    message = str(caught.value)
+    assert message.startswith(f"{path} does not look like a course secret (") and why in message and "\n" not in message
+    assert "token_hex" in message
+
+
+@pytest.mark.skipif(not Path("/etc/passwd").is_file(), reason="needs /etc/passwd")
+def test_etc_passwd_is_no_secret(monkeypatch):
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    with pytest.raises(SecretError, match="does not look like a course secret"):
+        load_secret(Path("/etc/passwd"), explicit=True)
+
+
+def test_a_pipe_or_device_given_as_the_secret_file_is_refused_without_waiting(monkeypatch, tmp_path):
+    import os
+
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    os.mkfifo(tmp_path / "pipe")
+    for path in (tmp_path / "pipe", Path("/dev/zero")):
+        if path.exists():
+            with pytest.raises(SecretError, match="not a regular file"):
+                load_secret(path, explicit=True)
+
+
+@pytest.mark.parametrize("mode, warned", [(0o600, ""), (0o400, ""), (0o640, "the other members of its group"),
+                                          (0o644, "other users of this computer"), (0o606, "other users")])
+def test_a_secret_file_others_can_read_is_used_with_a_warning(monkeypatch, tmp_path, capsys, mode, warned):
+    """A secret file readable by group or others was used without a word."""
+    from exgen.cli import main
+
+    monkeypatch.delenv("EXGEN_SECRET", raising=False)
+    path = tmp_path / "course.secret"
+    path.write_text(SECRET.decode() + "\n")
+    path.chmod(mode)
+    examples = Path(__file__).parent.parent / "examples"
+    assert main(["generate", str(examples / "tutorial1.yaml"), "--out", str(tmp_path / "out"), "--no-pdf",
+                 "--secret-file", str(path)]) == 0
+    err = capsys.readouterr().err
+    if warned:
+        assert (f"warning: the secret file {path} can be read by {warned}" in err and f"chmod 600 {path}" in err
+                and f"(mode {mode:04o})" in err)
+    else:
+        assert "warning" not in err

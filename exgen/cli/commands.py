@@ -42,6 +42,12 @@ def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
     if source.endswith("(new)"):
         print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
         source = source[: -len(" (new)")]
+    elif not source.startswith("$"):
+        from ..seeds import exposure
+
+        warning = exposure(Path(source))
+        if warning:
+            print(f"warning: {warning}", file=sys.stderr)
     return secret, source
 
 
