@@ -14,7 +14,8 @@ START_SECONDS = 120  # a loaded machine takes a while to import and load the ban
 
 
 @contextmanager
-def running_server(db: Path, *extra: str):
+def running_server(db: Path, *extra: str, output: list | None = None):
+    """The server's address; `output`, if given, receives what the server printed, once it has stopped."""
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONIOENCODING": "utf-8"}
     process = subprocess.Popen([sys.executable, "-m", "exgen.cli", "serve", "--port", "0", "--db", str(db), *extra],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
@@ -28,6 +29,9 @@ def running_server(db: Path, *extra: str):
         except subprocess.TimeoutExpired:
             process.kill()
             process.wait()
+        rest = process.stdout.read()
+        if output is not None:
+            output.append(rest)
 
 
 def _address(process) -> str:

@@ -119,7 +119,7 @@ def test_printable_text_holds_nothing_that_echoing_would_change():
     printable character is one it drops or a blank other than the space (the whole of Unicode checked)."""
     import unicodedata
 
-    from graders.echo import _DROPPED
+    from exgen.echo import _DROPPED
 
     changed = [hex(c) for c in range(0x110000) if chr(c).isprintable() and chr(c) != " "
                and (chr(c).isspace() or unicodedata.category(chr(c)) in _DROPPED)]

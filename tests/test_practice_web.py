@@ -8,6 +8,7 @@ import sqlite3
 import pytest
 from starlette.testclient import TestClient
 
+from exgen.answertypes import registry
 from practice.scope import Scope
 from practice.session import Practice
 from practice.store import Store
@@ -222,3 +223,57 @@ def test_an_assignments_practice_set_keeps_to_its_templates(bank, tmp_path):
         for _ in range(4):
             assert practice.problem(new_problem(client, "all")).template.id in allowed
         assert client.post("/next", data={"scope": "topic:gyroscopes"}).status_code == 400
+
+
+def test_a_post_from_an_opaque_origin_is_refused(client):
+    """`Origin: null` (a sandboxed frame, a file on disk) was accepted when Sec-Fetch-Site was absent."""
+    for headers in ({"origin": "null"}, {"origin": "null", "sec-fetch-site": "same-origin"}):
+        assert client.post("/next", data={"scope": "all"}, headers=headers).status_code == 403
+    assert client.post("/next", data={"scope": "all"}, headers={"origin": "http://127.0.0.1:8000"},
+                       follow_redirects=False).status_code == 303
+    # this app's own forms send their real origin: its pages' referrer policy is not no-referrer
+    assert client.get("/").headers["referrer-policy"] == "same-origin"
+
+
+HIDDEN = ["\u202e", "\u2066", "\u200f", "\u200b", "\x1b", "\u2028", "\ufeff", "\x00"]
+
+
+@pytest.mark.parametrize("kind", sorted(registry()))
+def test_control_and_bidi_characters_in_an_answer_never_reach_a_page(bank, client, practice, kind):
+    """A choice answer's message quoted the answer as typed, bidi overrides and all: every answer type's
+    messages, on a template that asks for one."""
+    template = next((t for t in bank if any(p.type == kind for p in t.parts)), None)
+    if template is None:
+        pytest.skip(f"no template of the bank has a {kind} answer")
+    problem_id = new_problem(client, f"template:{template.id}")
+    for part in practice.problem(problem_id).template.parts:
+        for hidden in HIDDEN:
+            for answer in (f"{hidden}left", f"12{hidden}5 rpm", f"clock{hidden}wise", f"{hidden * 3}x{hidden}"):
+                html = client.post(f"/problem/{problem_id}/check", data={"part": part.id, "answer": answer},
+                                   headers=JSON).json()["html"]
+                assert hidden not in html, (part.id, answer, html)
+    page = client.get(f"/problem/{problem_id}").text
+    assert not any(hidden in page for hidden in HIDDEN)
+
+
+def test_a_client_gone_mid_body_or_a_body_that_stalls_costs_no_traceback_and_no_long_wait(tmp_path):
+    """A client that disconnected mid-body printed two tracebacks; a body that stopped arriving held its
+    connection 70 s or more."""
+    from practice.web.app import BODY_SECONDS
+
+    output = []
+    with running_server(tmp_path / "p.sqlite3", output=output) as url:
+        host, port = url.removeprefix("http://").split(":")
+        head = (f"POST /next HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nContent-Type: application/x-www-form-urlencoded\r\n"
+                f"Content-Length: 100\r\n\r\nscope=al").encode()
+        with socket.create_connection((host, int(port)), timeout=60) as sock:
+            sock.sendall(head)  # and goes away
+        with socket.create_connection((host, int(port)), timeout=10 * BODY_SECONDS + 60) as sock:
+            sock.sendall(head)  # and stalls: the answer comes, the connection is closed
+            reply = sock.recv(300)
+            assert reply.startswith(b"HTTP/1.1 408"), reply
+            assert b"connection: close" in reply.lower()
+        with socket.create_connection((host, int(port)), timeout=60) as sock:
+            sock.sendall(f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n".encode())
+            assert sock.recv(100).startswith(b"HTTP/1.1 200")
+    assert "Traceback" not in output[0] and "ClientDisconnect" not in output[0], output[0]

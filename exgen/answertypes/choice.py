@@ -9,6 +9,7 @@ from functools import lru_cache
 from importlib import resources
 from typing import Mapping
 
+from ..echo import shown
 from ..errors import FormatProblem
 from ..template import PartSpec
 from .base import AnswerType, Given, Report, refuse_long
@@ -75,7 +76,7 @@ class Choice(AnswerType):
             return Given(text, word)
         named = named_choice(word, choices)
         if named is None:
-            raise FormatProblem(f"'{_short(text)}' is not one of the choices")
+            raise FormatProblem(f"'{shown(text, 40)}' is not one of the choices")
         return Given(text, named)
 
     def example(self, part: PartSpec) -> str:
@@ -136,11 +137,6 @@ def named_choice(text: str, choices) -> str | None:
     if any(w in _NEGATIONS for i, w in enumerate(words) if i not in covered):
         return None
     return kept[0][2]
-
-
-def _short(text: str, limit: int = 40) -> str:
-    text = " ".join(text.split())
-    return text if len(text) <= limit else text[: limit - 1] + "\u2026"
 
 
 TYPE = Choice()

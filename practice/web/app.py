@@ -11,6 +11,7 @@ anywhere but this server.
 """
 from __future__ import annotations
 
+import asyncio
 import hashlib
 import json
 import logging
@@ -20,7 +21,7 @@ from urllib.parse import parse_qs, urlsplit
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
-from starlette.requests import Request
+from starlette.requests import ClientDisconnect, Request
 from starlette.responses import HTMLResponse, JSONResponse, RedirectResponse, Response
 from starlette.routing import Route
 
@@ -31,6 +32,8 @@ from ..store import ProgressError
 from . import pages
 
 MAX_BODY = 8 * 1024   # a form holds a part id and one answer: a few hundred bytes
+#: A body that has not arrived whole by then is refused (a client that stalls holds no connection for long).
+BODY_SECONDS = 5.0
 MAX_FIELDS = 8
 LOOPBACK_NAMES = ("127.0.0.1", "localhost", "[::1]")
 SECURITY_HEADERS = [
@@ -38,7 +41,7 @@ SECURITY_HEADERS = [
                                  b"font-src 'self'; object-src 'none'; base-uri 'none'; form-action 'self'; "
                                  b"frame-ancestors 'none'"),
     (b"x-content-type-options", b"nosniff"),
-    (b"referrer-policy", b"no-referrer"),
+    (b"referrer-policy", b"same-origin"),  # other sites learn nothing; this one's forms send their origin
 ]
 NO_STORE = (b"cache-control", b"no-store")  # pages change with every answer; assets revalidate by ETag
 log = logging.getLogger("practice")
@@ -52,18 +55,25 @@ class BadRequest(Exception):
 
 # ---- reading a request ----------------------------------------------------------------------
 
+class Disconnected(Exception):
+    """The client went away before its request was read: there is no one to answer."""
+
+
 async def read_form(request: Request) -> dict[str, str]:
-    """The urlencoded fields of a POST, within MAX_BODY bytes, as text (one value per name)."""
+    """The urlencoded fields of a POST, within MAX_BODY bytes and BODY_SECONDS, as text (one value per name).
+    A POST from another site is refused, and so is one from an opaque origin (`Origin: null`: a sandboxed
+    frame, a file on disk): this app's own pages send their origin (their referrer policy is same-origin)."""
     if request.headers.get("sec-fetch-site", "same-origin") not in ("same-origin", "none"):
         raise BadRequest(403, "requests from other sites are refused")
     origin = request.headers.get("origin")
-    if origin and origin != "null" and urlsplit(origin).netloc != request.headers.get("host", ""):
+    if origin and (origin == "null" or urlsplit(origin).netloc != request.headers.get("host", "")):
         raise BadRequest(403, "requests from other sites are refused")
-    body = b""
-    async for chunk in request.stream():
-        body += chunk
-        if len(body) > MAX_BODY:
-            raise BadRequest(413, f"the request is larger than {MAX_BODY} bytes")
+    try:
+        body = await asyncio.wait_for(_body(request), BODY_SECONDS)
+    except asyncio.TimeoutError:
+        raise BadRequest(408, f"the request's body did not arrive within {BODY_SECONDS:g} seconds") from None
+    except ClientDisconnect:
+        raise Disconnected() from None
     kind = request.headers.get("content-type", "").split(";")[0].strip().lower()
     if body and kind != "application/x-www-form-urlencoded":
         raise BadRequest(415, "send the form as application/x-www-form-urlencoded")
@@ -73,6 +83,15 @@ async def read_form(request: Request) -> dict[str, str]:
     except (UnicodeDecodeError, ValueError):
         raise BadRequest(400, "the form could not be read (not UTF-8 text, or too many fields)") from None
     return {name: values[0] for name, values in fields.items()}
+
+
+async def _body(request: Request) -> bytes:
+    body = b""
+    async for chunk in request.stream():
+        body += chunk
+        if len(body) > MAX_BODY:
+            raise BadRequest(413, f"the request is larger than {MAX_BODY} bytes")
+    return body
 
 
 def field(form: dict[str, str], name: str) -> str:
@@ -97,7 +116,7 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
     def failure(request: Request, status: int, message: str) -> Response:
         if wants_json(request):
             return JSONResponse({"error": message}, status_code=status)
-        titles = {400: "Cannot do that", 403: "Refused", 404: "Not found", 413: "Too large",
+        titles = {400: "Cannot do that", 403: "Refused", 404: "Not found", 408: "Too slow", 413: "Too large",
                   415: "Cannot read that", 503: "Progress unavailable"}
         return page(status, titles.get(status, "Something went wrong"), message)
 
@@ -107,8 +126,13 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
             try:
                 form = await read_form(request) if request.method == "POST" else {}
                 return await run_in_threadpool(handler, request, form)
+            except Disconnected:  # nothing to say, and nothing worth a line on the terminal
+                return Response(status_code=400, headers={"connection": "close"})
             except BadRequest as exc:
-                return failure(request, exc.status, exc.message)
+                response = failure(request, exc.status, exc.message)
+                if exc.status == 408:  # the rest of the body may still come: not on this connection
+                    response.headers["connection"] = "close"
+                return response
             except ProgressError as exc:
                 return failure(request, 503, str(exc))
             except NoProblem as exc:

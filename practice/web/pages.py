@@ -12,6 +12,7 @@ import jinja2
 from markupsafe import Markup
 
 from exgen.answertypes import answer_type
+from exgen.echo import shown
 from exgen.figures import Drawn
 from exgen.render.context import figure_caption, key_context, line_context
 from exgen.render.html import HTML
@@ -107,21 +108,27 @@ def part_context(practice: Practice, problem: Problem, part, state: State, asked
     """A part's box; `asked`: a hint was just asked for, so whether there are more is worth knowing."""
     kind = answer_type(part)
     check = state.checks.get(part.id)
-    shown = state.hints.get(part.id, 0)
+    hinted = state.hints.get(part.id, 0)
     # the ladder (made from the worked solution) only once a hint is asked for: until then there may be more
-    known = bool(shown or asked)
+    known = bool(hinted or asked)
     ladder = practice.hints(problem, part.id) if known else ()
     return {
         "id": part.id, "ask": HTML.text(problem.variant.asks[part.id]), "unit": kind.hint(part),
         "example": kind.format_hint(part), "answer": check.answer if check else "",
         "feedback": feedback(check.status, check.message) if check else None,
-        "hints": [hint_context(i + 1, h) for i, h in enumerate(ladder[:shown])],
-        "more_hints": shown < len(ladder) if known else True, "problem": problem.id,
+        "hints": [hint_context(i + 1, h) for i, h in enumerate(ladder[:hinted])],
+        "more_hints": hinted < len(ladder) if known else True, "problem": problem.id,
     }
 
 
+#: A message on a page: long enough for every message exgen writes; what a student typed in it is short.
+MESSAGE_LENGTH = 400
+
+
 def feedback(status: str, message: str) -> dict:
-    return {"status": status, "message": message}
+    """A check's status and message for a page: the message cleaned as every echo of student text is
+    (one line, no control or bidi characters; the page escapes it as HTML)."""
+    return {"status": status, "message": shown(message, MESSAGE_LENGTH, word=48)}
 
 
 def hint_context(level: int, hint) -> dict:
