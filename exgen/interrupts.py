@@ -1,6 +1,6 @@
 """Ctrl+C and SIGTERM while a command runs: raised where the program is (KeyboardInterrupt, and
 Terminated for SIGTERM, so that both unwind alike and remove what was being written), except inside a
-`held()` block, where they wait until the block ends.
+`held()` block, where the first waits until the block ends (a second is raised at once).
 
 A pool starting or stopping its workers holds them: an exception raised in the middle of starting a
 process leaves a worker the pool does not know of, which nobody ever stops (and whose parent then waits
@@ -36,11 +36,14 @@ def held() -> Iterator[None]:
 
 
 def _raise(signum, frame) -> None:
+    """Raise the interrupt, or keep it for the end of the held block; a second one while held is raised at
+    once (a pool that never finishes stopping can still be interrupted)."""
     global _pending
     interrupt = Terminated if signum == signal.SIGTERM else KeyboardInterrupt
-    if _held:
-        _pending = _pending or interrupt
+    if _held and _pending is None:
+        _pending = interrupt
         return
+    _pending = None
     raise interrupt()
 
 

@@ -11,17 +11,15 @@ or ids differing only in capitals (their folders would be one on Windows and mac
 """
 from __future__ import annotations
 
-import codecs
 import csv
 import io
 import re
-import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from .assignment import Student
 from .errors import AssignmentError
-from .safefile import UnsafeFile, read_bytes
+from .safefile import NotText, Unreadable, read_text
 
 MAX_BYTES = 16 * 1024 * 1024
 READ_SECONDS = 10.0
@@ -81,42 +79,29 @@ def read_roster(path: Path) -> Roster:
 
 def _text(path: Path) -> str:
     try:
-        raw = read_bytes(path, MAX_BYTES, time.perf_counter() + READ_SECONDS)
-    except FileNotFoundError:
-        raise AssignmentError(path, "no such roster file") from None
-    except UnsafeFile as exc:
-        raise AssignmentError(path, f"cannot read the roster: {exc.reason}") from None
-    except OSError as exc:
-        raise AssignmentError(path, f"cannot read the roster: {exc.strerror or exc}") from None
-    if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        try:
-            return raw.decode("utf-16")
-        except UnicodeDecodeError:
-            raise AssignmentError(path, "not valid UTF-16 text: save the roster as CSV UTF-8") from None
-    if b"\x00" in raw:
-        line = raw[: raw.index(b"\x00")].count(b"\n") + 1
-        raise AssignmentError(path, "holds NUL bytes: UTF-16 text without its byte-order mark, or not text at all; "
-                                    "save the roster as CSV UTF-8", line)
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        raise _not_utf8(path, raw, exc) from None
+        return read_text(path, MAX_BYTES, READ_SECONDS)
+    except NotText as exc:
+        if exc.reason.startswith("not UTF-8"):
+            raise _not_utf8(path, exc) from None
+        raise AssignmentError(path, f"{exc.reason}; save the roster as CSV UTF-8", exc.line, exc.column) from None
+    except Unreadable as exc:
+        raise AssignmentError(path, "no such roster file" if exc.missing else
+                              f"cannot read the roster: {exc.reason}") from None
 
 
-def _not_utf8(path: Path, raw: bytes, exc: UnicodeDecodeError) -> AssignmentError:
+def _not_utf8(path: Path, exc: NotText) -> AssignmentError:
     """Where the text stops being UTF-8, and what it says read as Windows-1252 (Latin-1), the likeliest."""
-    start = raw.rfind(b"\n", 0, exc.start) + 1
-    end = raw.find(b"\n", exc.start)
+    raw = exc.raw
+    start = exc.offset - exc.column + 1
+    end = raw.find(b"\n", exc.offset)
     line_bytes = raw[start: end if end != -1 else len(raw)]
-    column = exc.start - start + 1
     try:
         read = line_bytes.decode("cp1252").strip()
     except UnicodeDecodeError:
         read = line_bytes.decode("latin-1").strip()
     word = next((w for w in re.split(r"[,;\t]", read) if any(ord(c) > 127 for c in w)), read)[:40]
-    return AssignmentError(path, f"not UTF-8 text (the byte 0x{raw[exc.start]:02x}): saved as Latin-1 or Windows-1252 "
-                                 f"it reads {word.strip()!r}; save the roster as CSV UTF-8 (in Excel: Save As, "
-                                 "CSV UTF-8)", raw[: exc.start].count(b"\n") + 1, column)
+    return AssignmentError(path, f"{exc.reason}: saved as Latin-1 or Windows-1252 it reads {word.strip()!r}; save "
+                                 "the roster as CSV UTF-8 (in Excel: Save As, CSV UTF-8)", exc.line, exc.column)
 
 
 def _delimiter(header: str) -> str:

@@ -8,6 +8,7 @@ starts before the open.
 """
 from __future__ import annotations
 
+import codecs
 import os
 import stat
 import time
@@ -75,3 +76,52 @@ def _in_time(path: Path, deadline: float | None) -> None:
 
 def _size(limit: int) -> str:
     return f"{limit // (1024 * 1024)} MiB" if limit % (1024 * 1024) == 0 else f"{limit // 1024} KiB"
+
+
+class Unreadable(Exception):
+    """A file whose text cannot be had: missing, not a regular file, too large or slow, not readable, or not
+    text. `reason` says why in words; `line` and `column`, where known, the place of the first bad byte."""
+
+    def __init__(self, reason: str, line: int | None = None, column: int | None = None, missing: bool = False):
+        super().__init__(reason)
+        self.reason, self.line, self.column, self.missing = reason, line, column, missing
+
+
+class NotText(Unreadable):
+    """Bytes that are no text exgen reads (`raw`, bad from `offset`)."""
+
+    def __init__(self, reason: str, raw: bytes, offset: int):
+        line = raw[:offset].count(b"\n") + 1
+        super().__init__(reason, line, offset - (raw.rfind(b"\n", 0, offset) + 1) + 1)
+        self.raw, self.offset = raw, offset
+
+
+def read_text(path: Path, limit: int, seconds: float) -> str:
+    """The text of a regular file of at most `limit` bytes, read within `seconds` (see read_bytes and
+    decoded); Unreadable says why not."""
+    try:
+        raw = read_bytes(path, limit, time.perf_counter() + seconds)
+    except FileNotFoundError:
+        raise Unreadable("no such file", missing=True) from None
+    except UnsafeFile as exc:
+        raise Unreadable(exc.reason) from None
+    except OSError as exc:
+        raise Unreadable(exc.strerror or str(exc)) from None
+    return decoded(raw)
+
+
+def decoded(raw: bytes) -> str:
+    """Text from a file's bytes: UTF-8 (its byte-order mark dropped), or UTF-16 with its byte-order mark;
+    NotText for anything else (a NUL byte: UTF-16 without its mark, or no text at all)."""
+    if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        try:
+            return raw.decode("utf-16")
+        except UnicodeDecodeError as exc:
+            raise NotText("not valid UTF-16 text", raw, exc.start) from None
+    if b"\x00" in raw:
+        raise NotText("holds NUL bytes: UTF-16 text without its byte-order mark, or not text at all", raw,
+                      raw.index(b"\x00"))
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise NotText(f"not UTF-8 text (the byte 0x{raw[exc.start]:02x})", raw, exc.start) from None

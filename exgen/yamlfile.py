@@ -11,15 +11,13 @@ value, with where it is and what to do.
 """
 from __future__ import annotations
 
-import codecs
 import re
-import time
 from pathlib import Path
 
 import yaml
 
 from .errors import ExgenError
-from .safefile import UnsafeFile, read_bytes
+from .safefile import NotText, Unreadable, read_text
 
 #: As for answer files (graders.formats): an instructor's file is a few kilobytes.
 MAX_BYTES = 256 * 1024
@@ -65,25 +63,11 @@ def read_yaml(path: Path, what: str = "the file"):
 
 def _text(path: Path) -> str:
     try:
-        raw = read_bytes(path, MAX_BYTES, time.perf_counter() + READ_SECONDS)
-    except FileNotFoundError:
-        raise YamlFileError(path, "no such file") from None
-    except UnsafeFile as exc:
-        raise YamlFileError(path, f"cannot be read: {exc.reason}") from None
-    except OSError as exc:
-        raise YamlFileError(path, f"cannot be read: {exc.strerror or exc}") from None
-    if raw.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
-        try:
-            return raw.decode("utf-16")
-        except UnicodeDecodeError:
-            raise YamlFileError(path, "not valid UTF-16 text: save the file as UTF-8") from None
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        line = raw[: exc.start].count(b"\n") + 1
-        column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
-        raise YamlFileError(path, f"not UTF-8 text (the byte 0x{raw[exc.start]:02x} here): save the file as UTF-8",
-                            line, column) from None
+        return read_text(path, MAX_BYTES, READ_SECONDS)
+    except NotText as exc:
+        raise YamlFileError(path, f"{exc.reason}: save the file as UTF-8", exc.line, exc.column) from None
+    except Unreadable as exc:
+        raise YamlFileError(path, exc.reason if exc.missing else f"cannot be read: {exc.reason}") from None
 
 
 def _check(path: Path, root: yaml.Node, what: str) -> None:

@@ -152,3 +152,18 @@ def test_the_command_names_what_it_removed(tmp_path, capsys, monkeypatch):
     assert f"note: removed {left}, left by an interrupted run (process {dead.process.pid}, no longer running)" in err
     assert "note: " + str(tmp_path / ".out.writing-k3j2h1") + " was left by an interrupted run of an earlier" in err
     assert faults.beside(tmp_path / "out") == [".out.writing-k3j2h1"]
+
+
+def test_the_practice_server_killed_outright_leaves_no_worker(tmp_path):
+    """`exgen serve` draws figures ahead in a worker process: it ends with the server, kill -9 included."""
+    run = faults.start(["serve", "--port", "0", "--db", str(tmp_path / "p.sqlite3")], tmp_path / "serve.log")
+    deadline = time.monotonic() + faults.RUN_GUARD
+    while "exgen practice is at" not in run.output() and time.monotonic() < deadline and run.process.poll() is None:
+        time.sleep(0.1)
+    assert "exgen practice is at" in run.output(), run.output()
+    while len(faults.survivors(run.mark)) < 2 and time.monotonic() < deadline:  # the server and its worker
+        time.sleep(0.1)
+    assert len(faults.survivors(run.mark)) >= 2
+    run.process.kill()
+    run.finish()
+    assert not faults.left_running(run.mark)
