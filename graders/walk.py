@@ -51,8 +51,10 @@ UNREADABLE_FOLDER = "a folder that cannot be looked into: {reason}"
 NOT_LISTED = "{count:,} more entries in no student's place here were not listed one by one"
 LIMIT_LISTED = ("more than {limit:,} files and folders in no student's place: {count:,} were counted, not listed "
                 "one by one (in {folders})")
-LIMIT_NAMES = "more than {limit:,} names in all: the walk stopped, and {count:,} folder(s) were not looked into"
+LIMIT_NAMES = ("more than {limit:,} names in all: the walk stopped, and {count:,} folder(s) were not looked into "
+               "(or only in part)")
 NOT_ENTERED = "a folder not looked into: the walk stopped after {limit:,} names"
+CUT_SHORT = "a folder looked into only in part: the walk stopped after {limit:,} names"
 LIMIT_DEPTH = "folders more than {limit} levels down were not looked into ({folders})"
 TOO_DEEP_FOLDER = "a folder more than {limit} levels down; not looked into"
 ACCEPT = "--accept-limits"
@@ -94,6 +96,7 @@ class _Walk:
     counted: dict[Path, int] = field(default_factory=dict)  # entries not listed, by the folder they are in
     too_deep: list[Path] = field(default_factory=list)
     seen: dict[tuple[int, int], Path] = field(default_factory=dict)
+    not_looked_into: int = 0  # folders (wholly or in part) once MAX_NAMES was reached
 
     def run(self) -> Walked:
         places: deque = deque()  # folders in a student's place, walked first: (folder, parts)
@@ -105,7 +108,7 @@ class _Walk:
             if self.names >= MAX_NAMES:
                 left = [folder] + [f for f, _ in places] + [f for f, _ in others]
                 self.out.skipped += [FileProblem(f, NOT_ENTERED.format(limit=MAX_NAMES)) for f in left]
-                self.out.limits.append(LIMIT_NAMES.format(limit=MAX_NAMES, count=len(left)))
+                self.not_looked_into += len(left)
                 break
             for entry in self._entries(folder):
                 self.names += 1
@@ -129,12 +132,20 @@ class _Walk:
         return False
 
     def _entries(self, folder: Path) -> list:
+        """The folder's entries by name, at most as many as are left of MAX_NAMES (a folder of millions is
+        not held in memory whole: what is past the limit is said)."""
+        budget, entries = MAX_NAMES - self.names, []
         try:
             with os.scandir(folder) as listing:
-                return sorted(listing, key=lambda e: e.name)
+                for entry in listing:
+                    if len(entries) == budget:
+                        self.out.skipped.append(FileProblem(folder, CUT_SHORT.format(limit=MAX_NAMES)))
+                        self.not_looked_into += 1
+                        break
+                    entries.append(entry)
         except OSError as exc:
             self.out.skipped.append(FileProblem(folder, UNREADABLE_FOLDER.format(reason=exc.strerror or exc)))
-            return []
+        return sorted(entries, key=lambda e: e.name)
 
     def _folder(self, entry, parts: tuple[str, ...], queue: deque, listed: bool) -> None:
         """Queue a folder to enter, unless exgen wrote it, it is too deep or it was met before (then it is
@@ -177,6 +188,8 @@ class _Walk:
             self.out.files.append(path)
 
     def _finish(self) -> None:
+        if self.not_looked_into:
+            self.out.limits.append(LIMIT_NAMES.format(limit=MAX_NAMES, count=self.not_looked_into))
         for folder, count in self.counted.items():
             self.out.skipped.append(FileProblem(folder, NOT_LISTED.format(count=count)))
         if self.counted:

@@ -292,3 +292,20 @@ def test_the_command_says_a_limit_and_exits_1_unless_told_to_go_on(bank, tmp_pat
     captured = capsys.readouterr()
     assert "WARNING: graded with --accept-limits" in captured.err and "limits reached: 1" in captured.out
     assert "1 graded" in captured.out
+
+
+def test_past_the_names_limit_the_walk_stops_and_says_where(bank, tmp_path, monkeypatch):
+    monkeypatch.setattr(graders.walk, "MAX_NAMES", 50)
+    students = roster(2)
+    (tmp_path / f"{students[0].id}.json").write_text(answers_of(bank, students[0]), encoding="utf-8")
+    for folder in ("many", "more", "most"):
+        (tmp_path / folder).mkdir()
+        for i in range(40):
+            (tmp_path / folder / f"{i}.txt").write_text("x")
+    with pytest.raises(LimitsReached, match="more than 50 names in all: the walk stopped, and 2 folder"):
+        graded_in_time(ASSIGNMENT, bank, SECRET, tmp_path, roster=students)
+    batch = graded_in_time(ASSIGNMENT, bank, SECRET, tmp_path, roster=students, accept_limits=True)
+    assert batch.sheets[0].status == GRADED and len(batch.limits) == 1
+    reasons = listed(batch)
+    assert "looked into only in part" in reasons["more"] and reasons["most"].startswith("a folder not looked into")
+    assert sum(1 for p in batch.problems if p.path.parent.name == "many") == 40

@@ -59,8 +59,9 @@ def killed_again_and_again(tmp_path, command, salt: int, patches=""):
         status = run.kill_at(at, faults.SIGNALS[name])
         where = f"{name} at {at:.2f} s ({run.output()[-400:]})"
         assert not faults.left_running(run.mark), f"processes outlived the run killed by {where}"
-        if name == "SIGTERM" and status != 0:
-            assert status == 143 and "Traceback" not in run.output(), where
+        if name == "SIGTERM" and status != 0:  # 143 once exgen handles it; before that (Python starting) the
+            assert status in (143, -signal.SIGTERM), where  # signal's own end, which a shell reports as 143 too
+            assert "Traceback" not in run.output(), where
         left = faults.snapshot(out)
         assert left in (wholes[now], wholes[which]), f"a half-written output after {where}"
         now = which if left == wholes[which] else now
