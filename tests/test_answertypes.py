@@ -131,3 +131,27 @@ def test_other_answers_tried_for_uses_differ_from_the_answer(kind):
     part = answers.sample_part()
     value = answers.example(part)
     assert all(other != value for other in answers.nudges(value, part))
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_a_sheet_form_offers_choices_exactly_where_a_learning_system_does(kind):
+    """The form's drop-down comes from the type (never from its options): the same choices an export
+    offers, each read back as itself; a type without choices gets a box to type into."""
+    from exgen.answertypes.lms import NoLmsForm
+
+    answers = answer_type(kind)
+    part = answers.sample_part()
+    offered = answers.form_choices(part)
+    value = answers.example(part)
+    try:
+        gaps = answers.lms_gaps(part, value, {})
+    except NoLmsForm:
+        gaps = ()
+    listed = [g.choices for g in gaps if getattr(g, "kind", "") == "choice"]
+    if offered is None:
+        assert not listed
+        return
+    assert listed == [offered] and value in offered
+    for choice in offered:
+        assert answers.matches(read(choice, part).value, choice, part)
+        assert [c for c in offered if answers.matches(read(choice, part).value, c, part)] == [choice]

@@ -92,18 +92,21 @@ def test_the_form_lists_each_question_s_parts_named_slot_dot_part(issued):
 def test_each_field_tells_its_part_and_unit_and_a_choice_is_a_drop_down_of_its_choices(issued):
     sheet, pdf, _ = issued
     parts = {f"{q.slot}.{p.id}": (q, p) for q in sheet.questions for p in q.variant.template.parts}
+    drop_downs = 0
     for _, widget, name in widgets(pdf):
         question, part = parts[name]
         tip = widget["/TU"]
         assert tip.startswith(f"Question {question.number} ({part.id}): ") and answer_type(part).hint(part) in tip
-        choices = tuple(part.options.get("choices", ()))
+        choices = answer_type(part).form_choices(part)
         if choices:
             assert widget["/FT"] == "/Ch" and int(widget["/Ff"]) & COMBO and tuple(widget["/Opt"]) == choices
+            drop_downs += 1
         else:
             assert widget["/FT"] == "/Tx"
         assert "/V" not in widget and "/A" not in widget and "/AA" not in widget
         appearance = widget["/AP"]["/N"].get_object()
         assert appearance.get_data().split() == [b"/Tx", b"BMC", b"EMC"]  # empty: prints nothing
+    assert drop_downs >= 5  # every template's sheet: the bank's choice parts among them
 
 
 def test_who_and_which_sheet_are_stored_in_the_document_not_in_a_field(issued):

@@ -132,6 +132,10 @@ class AnswerType:
         """Lines for the answer file's header when the sheet has parts of this type ("" for none)."""
         return ""
 
+    def form_choices(self, part: PartSpec) -> tuple[str, ...] | None:
+        """The choices a sheet's form offers for the part (a drop-down), or None for a box to type into."""
+        return None
+
     def tolerance_text(self, part: PartSpec) -> str:
         """The tolerance the grader applies, in words: the key prints it and feedback quotes it."""
         return "exact"

@@ -68,6 +68,9 @@ class Choice(AnswerType):
     def form_hint(self, part: PartSpec) -> str:
         return "one of: " + ", ".join(part.options.get("choices", ()))
 
+    def form_choices(self, part: PartSpec) -> tuple[str, ...]:
+        return tuple(part.options.get("choices", ()))
+
     def read(self, text: str, part: PartSpec) -> Given:
         refuse_long(text, MAX_CHOICE_LENGTH)
         word = " ".join(text.split())

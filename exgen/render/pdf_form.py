@@ -122,8 +122,7 @@ def _widget(question, part, rect, parent: "Ref", page: int, appearance: "Ref") -
         "/MK": {},  # no border, no background: the printed line is the box
         "/AP": {"/N": appearance},
     }
-    # a choice part lists its choices (the choice type keeps them in its options)
-    choices = tuple(part.options.get("choices", ())) if part.options else ()
+    choices = answer_type(part).form_choices(part)
     if choices:
         widget.update({"/FT": Name("/Ch"), "/Ff": COMBO, "/Opt": list(choices)})
     else:
