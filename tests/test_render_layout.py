@@ -57,7 +57,7 @@ def preamble():
     """The key's preamble and definitions, without a sheet."""
     context = {"doc_title": "t", "doc_author": "a", "closing": "", "footer_left": "", "font": FAMILY, "course": "",
                "title": "", "student_name": "", "student_id": "", "code": "", "due": "", "assignment_id": "",
-               "total": "", "instructions": "", "questions": [], "form_regions": False}
+               "total": "", "instructions": "", "questions": [], "form": False, "form_regions": False}
     return render("key.typ.j2", context).split("\n#sheet-header")[0] + "\n"
 
 

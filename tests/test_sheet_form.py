@@ -1,7 +1,8 @@
 """The sheet PDF's answer form, read from the PDF as a viewer reads it and checked against where the layout
 put each part: for every template, one field per part, in reading order, inside its part's region, named,
-tooltipped and typed for its answer; the identity in the document, never in a field; and a sheet with its
-empty form prints exactly as the sheet without one."""
+tooltipped and typed for its answer; each field tagged a /Form element in the structure tree, in reading order
+(walked here, and checked by a PDF/UA checker); the identity in the document, never in a field; and a sheet
+with its empty form prints exactly as the sheet without one."""
 import io
 import json
 import shutil
@@ -118,6 +119,74 @@ def test_who_and_which_sheet_are_stored_in_the_document_not_in_a_field(issued):
     assert all(name.count(".") == 1 and name.split(".")[0] in {q.slot for q in sheet.questions}
                for name in reader.get_fields() if "." in name)
     assert not reader.attachments  # the layout's places are gone from the catalog
+
+
+# ---- the structure tree: where a screen reader finds each field ---------------------------------------
+
+def structure(reader: PdfReader) -> tuple[list, dict[int, object]]:
+    """The structure elements in reading order (depth first from the root, each naming as its parent the
+    element that lists it), and the parent tree flattened (structure parent key -> element)."""
+    root = reader.trailer["/Root"]["/StructTreeRoot"]
+    order = list(_depth_first(root))
+    parents, nodes = {}, [root["/ParentTree"].get_object()]
+    while nodes:
+        node = nodes.pop()
+        nums = node.get("/Nums", [])
+        parents.update((int(nums[i]), nums[i + 1].get_object()) for i in range(0, len(nums), 2))
+        nodes += [k.get_object() for k in node.get("/Kids", [])]
+    assert max(parents) < int(root["/ParentTreeNextKey"])
+    return order, parents
+
+
+def _kids(element) -> list:
+    kids = element.get("/K")
+    kids = kids.get_object() if kids is not None else []
+    return [k.get_object() for k in (kids if isinstance(kids, list) else [kids])]
+
+
+def _depth_first(element):
+    for kid in _kids(element):
+        if isinstance(kid, dict) and "/S" in kid:  # an element (marked content and object references are leaves)
+            assert kid["/P"].get_object() == element
+            yield kid
+            yield from _depth_first(kid)
+
+
+def test_each_field_is_tagged_a_form_element_where_its_answer_line_is_read(issued):
+    sheet, pdf, _ = issued
+    reader = PdfReader(io.BytesIO(pdf), strict=True)
+    order, parents = structure(reader)
+    found = widgets(pdf)
+    tagged = []
+    for element in order:
+        references = [k for k in _kids(element) if isinstance(k, dict) and k.get("/Type") == "/OBJR"]
+        over_widgets = [r for r in references if r["/Obj"].get_object().get("/Subtype") == "/Widget"]
+        if element["/S"] == "/Form":
+            (reference,) = over_widgets
+            tagged.append(reference.raw_get("/Obj").idnum)
+            assert reference["/Pg"].get_object()["/Type"] == "/Page"
+        else:
+            assert not over_widgets, element["/S"]  # a widget is tagged /Form, never /Link
+    ids = [widget.indirect_reference.idnum for _, widget, _ in found]
+    assert tagged == ids  # one /Form element per field, read in the fields' order
+    for page, widget, name in found:
+        element = parents[int(widget["/StructParent"])]
+        assert element["/S"] == "/Form" and widget["/TU"], name  # the field's element, and its spoken name
+        assert reader.pages[page].get("/Tabs") == "/S"  # tabbing follows the structure
+    assert not [a for p in reader.pages for a in p.get("/Annots") or [] if a.get_object()["/Subtype"] == "/Link"]
+
+
+def test_a_pdf_ua_checker_finds_no_failure_the_form_adds(issued):
+    """PDF/UA-1 as the page checker (veraPDF's rules) reads it: whatever Typst's sheet lacks (a figure's
+    alternative text, the PDF/UA identification), the form adds no failure of its own."""
+    checker = pytest.importorskip("page", reason="the PDF/UA checker page-validation is not installed")
+    sheet, pdf, _ = issued
+
+    def failed(document: bytes) -> set[str]:
+        return {f.rule_id for f in checker.validate_pdf_bytes(document, profile="ua1").failures}
+
+    without = failed(sheet_pdf(sheet, form=False))  # no widget there: no widget's rule can fail
+    assert failed(pdf) <= without, failed(pdf) - without
 
 
 # ---- the printed look -------------------------------------------------------------------------------

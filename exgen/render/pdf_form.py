@@ -1,11 +1,16 @@
 """The sheet's answer form: a text field (a drop-down for a choice) on each part's answer line, added to the
 typeset PDF as an incremental update.
 
-Typst writes no form fields, so the sheet's layout reports where each answer line landed (page, position
-and size, attached to the PDF as data by `field-places()` in the preamble) and the fields are set on those
-places here. The typeset bytes are kept as they are and the form is appended after them (new objects, the
-catalog, pages and document information written again, a new cross-reference section), as a viewer saves
-a filled form: reading the PDF whole and writing it anew would cost as much again as typesetting it.
+Typst writes no form fields, so on a sheet with a form each answer line is a link to
+`exgen-field:<question>.<part index>`: Typst writes it as a link annotation with the line's rectangle, listed
+on its page, and tags it in the structure tree where the line is read (a /Link element whose object reference
+names the annotation). Here each such annotation becomes the part's field: the same object, written again as
+a widget with the same rectangle and structure parent, and its structure element becomes a /Form element, so
+the fields are in the tagged PDF's reading order for screen readers (and for the Tab key: Typst sets each
+page with annotations to tab in structure order). The typeset bytes are kept as they are and
+the form is appended after them (new objects, the annotations, structure elements, catalog and document
+information written again, a new cross-reference section), as a viewer saves a filled form: reading the PDF
+whole and writing it anew would cost as much again as typesetting it.
 
 Every field is an AcroForm field (no XFA, no JavaScript) with its own appearance stream, empty until a
 student types, so a sheet prints exactly as it was typeset. Fields are named `<slot>.<part>` (a parent
@@ -15,97 +20,163 @@ information, where grading checks them: never into a field a student could edit.
 """
 from __future__ import annotations
 
-import io
-import json
 import re
-
-from pypdf import PdfReader
-from pypdf.generic import ArrayObject, DictionaryObject, IndirectObject, NameObject, PdfObject, TextStringObject
+from dataclasses import dataclass
 
 from ..errors import ExgenError
+from .pdf_objects import Name, PdfSyntaxError, Reader, Ref, Stream, Update
 from .targets import PLAIN
 
-#: Where the layout's places arrive, as an attachment of the typeset PDF (removed from the catalog here).
-PLACES = "exgen-fields.json"
+#: The links the layout makes of the answer lines (preamble.typ.j2, `answer-line`): question number, part index.
+ANCHOR = re.compile(r"exgen-field:(\d+)\.(\d+)")
 #: The document information keys the grader reads back.
 INFO_KEYS = {"assignment": "/ExgenAssignment", "student": "/ExgenStudent", "code": "/ExgenCode"}
 FONT = "/Helv"
 #: What typed text looks like: Helvetica (every viewer has it), 10 pt, black.
 APPEARANCE = f"{FONT} 10 Tf 0 g"
 COMBO = 1 << 17  # field flag: a drop-down list
-TAB_ORDER = "/R"  # fields tabbed through in rows, as they are read
+#: The deepest a page tree or a number tree of the typeset PDF is followed.
+MAX_TREE_DEPTH = 32
 
 
 class FormError(ExgenError, RuntimeError):
-    """The typeset sheet does not report the answer lines the sheet has."""
+    """The typeset sheet does not hold the answer lines the sheet has."""
+
+
+@dataclass(frozen=True)
+class Anchor:
+    """An answer line as Typst wrote it: its link annotation's object, page, rectangle and structure parent."""
+
+    annotation: int
+    page: int
+    rect: tuple[float, ...]
+    struct_parent: int | None
 
 
 def add_form(typeset: bytes, sheet) -> bytes:
-    """`typeset` (a sheet's PDF as Typst wrote it, with its answer lines' places attached) with the answer
+    """`typeset` (a sheet's PDF as Typst wrote it, its answer lines links to `exgen-field:`) with the answer
     form added and the sheet's identity in its document information."""
-    reader = PdfReader(io.BytesIO(typeset), strict=True)  # Typst's own output: no repairs to look for
-    places = _places(reader)
-    update = _Update(int(reader.trailer["/Size"]))
+    try:
+        return _add_form(Reader(typeset), sheet)
+    except PdfSyntaxError as exc:
+        raise FormError(f"the typeset PDF cannot take the form: {exc}") from None
+
+
+def _add_form(reader: Reader, sheet) -> bytes:
+    trailer = reader.trailer
+    root_ref = trailer.get("/Root")
+    root = dict(_dict(reader, root_ref, "catalog"))
+    anchors = _anchors(reader, root)
+    tagged = _parent_tree(reader, root)
+    update = Update(int(trailer["/Size"]))
     font = update.add({"/Type": Name("/Font"), "/Subtype": Name("/Type1"), "/BaseFont": Name("/Helvetica"),
                        "/Encoding": Name("/WinAnsiEncoding")})
-    pages = list(reader.pages)
-    annots: dict[int, list[Ref]] = {}
     fields, empty = [], {}
     for question in sheet.questions:
         kids: list[Ref] = []
         parent = update.add({"/T": question.slot, "/Kids": kids})
         fields.append(parent)
         for index, part in enumerate(question.variant.template.parts):
-            place = places.get((question.number, index))
-            if place is None:
-                raise FormError(f"the layout reports no answer line for question {question.number} ({part.id})")
-            page_index = int(place["page"]) - 1
-            if not 0 <= page_index < len(pages):
-                raise FormError(f"the answer line of question {question.number} ({part.id}) is on no page")
-            top = float(pages[page_index].mediabox.top)
-            x, y, w, h = (float(place[k]) for k in ("x", "y", "w", "h"))
-            size = (round(w, 2), round(h, 2))
+            anchor = anchors.pop((question.number, index), None)
+            if anchor is None:
+                raise FormError(f"the layout made no answer line for question {question.number} ({part.id})")
+            x0, y0, x1, y1 = anchor.rect
+            size = (round(x1 - x0, 2), round(y1 - y0, 2))
             if size not in empty:
                 empty[size] = update.add(_appearance(*size, font))
-            x += float(place["dx"])  # the mark is where the line with "Answer:" starts, on its baseline
-            rect = [round(v, 2) for v in (x, top - y, x + w, top - y + h)]
-            ref = update.add(_widget(question, part, rect, parent, pages[page_index].indirect_reference.idnum,
-                                     empty[size]))
-            kids.append(ref)
-            annots.setdefault(page_index, []).append(ref)
-    for page_index, refs in annots.items():
-        page = pages[page_index]
-        copy = DictionaryObject(page)
-        copy[NameObject("/Annots")] = ArrayObject([*_existing(page.get("/Annots")), *(r.pypdf() for r in refs)])
-        copy[NameObject("/Tabs")] = NameObject(TAB_ORDER)
-        update.put(page.indirect_reference.idnum, copy)
-    form = update.add({"/Fields": fields, "/DA": APPEARANCE, "/DR": {"/Font": {FONT: font}}})
-    root_ref = reader.trailer.raw_get("/Root")
-    root = DictionaryObject(reader.trailer["/Root"])
-    root[NameObject("/AcroForm")] = form.pypdf()
-    _drop_places(root)
-    update.put(root_ref.idnum, root)
-    info_ref = reader.trailer.raw_get("/Info")
-    info = DictionaryObject(reader.trailer["/Info"]) if isinstance(info_ref, IndirectObject) else DictionaryObject()
+            widget = _widget(question, part, [round(v, 2) for v in anchor.rect], parent, anchor.page, empty[size])
+            if anchor.struct_parent is not None and tagged is not None:
+                number, element = _form_element(reader, tagged, anchor)
+                update.put(number, element)
+                widget["/StructParent"] = anchor.struct_parent
+            update.put(anchor.annotation, widget)
+            kids.append(Ref(anchor.annotation))
+    if anchors:
+        raise FormError(f"the layout made answer lines for parts the sheet does not have: {sorted(anchors)}")
+    root["/AcroForm"] = update.add({"/Fields": fields, "/DA": APPEARANCE, "/DR": {"/Font": {FONT: font}}})
+    update.put(root_ref, root)
+    info_ref = trailer.get("/Info")
+    info = dict(_dict(reader, info_ref, "document information")) if isinstance(info_ref, Ref) else {}
     identity = {"assignment": sheet.assignment.id, "student": sheet.student.id, "code": sheet.code}
-    for key, value in identity.items():
-        info[NameObject(INFO_KEYS[key])] = TextStringObject(value)
-    if isinstance(info_ref, IndirectObject):
-        update.put(info_ref.idnum, info)
-        info = Ref(info_ref.idnum)
+    info.update({INFO_KEYS[key]: value for key, value in identity.items()})
+    if isinstance(info_ref, Ref):
+        update.put(info_ref, info)
     else:
-        info = update.add(info)
-    ids = reader.trailer.get("/ID")
-    return update.write(typeset, Ref(root_ref.idnum), info, ids)
+        info_ref = update.add(info)
+    kept = {"/ID": trailer["/ID"]} if "/ID" in trailer else {}
+    return update.write(reader, {"/Root": root_ref, "/Info": info_ref, **kept})
 
 
-def _places(reader: PdfReader) -> dict[tuple[int, int], dict]:
-    """(question number, part index) -> the answer line's page, where its line starts on its baseline (x, and y
-    from the page's top), how far right of that it starts (dx), and its size, in pt."""
-    found = reader.attachments.get(PLACES)
-    if not found:
-        raise FormError("the layout attached no answer lines' places")
-    return {(int(p["question"]), int(p["part"])): p for p in json.loads(found[0])}
+def _anchors(reader: Reader, root: dict) -> dict[tuple[int, int], Anchor]:
+    """(question number, part index) -> the link annotation Typst wrote for that answer line."""
+    found: dict[tuple[int, int], Anchor] = {}
+    for page in _pages(reader, root.get("/Pages")):
+        for ref in reader.resolve(reader.object(page).get("/Annots")) or ():
+            annot = reader.resolve(ref)
+            if not isinstance(annot, dict) or annot.get("/Subtype") != "/Link":
+                continue
+            action = reader.resolve(annot.get("/A"))
+            target = action.get("/URI") if isinstance(action, dict) else None
+            matched = ANCHOR.fullmatch(target.text()) if hasattr(target, "text") else None
+            if matched is None:
+                continue
+            key = (int(matched.group(1)), int(matched.group(2)))
+            if key in found or not isinstance(ref, Ref):
+                raise FormError(f"the layout made two answer lines for question {key[0]}, part {key[1] + 1}")
+            parent = annot.get("/StructParent")
+            found[key] = Anchor(ref, page, tuple(float(v) for v in annot["/Rect"]),
+                                parent if isinstance(parent, int) else None)
+    return found
+
+
+def _pages(reader: Reader, node, depth: int = 0) -> list[Ref]:
+    """The page objects of the page tree under `node`, in order."""
+    if depth > MAX_TREE_DEPTH or not isinstance(node, Ref):
+        raise FormError("the typeset PDF's page tree is not one the form can read")
+    value = reader.object(node)
+    if value.get("/Type") == "/Page":
+        return [node]
+    return [page for kid in reader.resolve(value.get("/Kids")) or () for page in _pages(reader, kid, depth + 1)]
+
+
+def _parent_tree(reader: Reader, root: dict) -> dict[int, Ref] | None:
+    """The tagged PDF's structure parents (the number tree /StructTreeRoot /ParentTree, flattened), or None
+    for an untagged one."""
+    tree = reader.resolve(root.get("/StructTreeRoot"))
+    tree = reader.resolve(tree.get("/ParentTree")) if isinstance(tree, dict) else None
+    if tree is None:
+        return None
+    out: dict[int, Ref] = {}
+    nodes = [(tree, 0)]
+    while nodes:
+        node, depth = nodes.pop()
+        if depth > MAX_TREE_DEPTH or not isinstance(node, dict):
+            raise FormError("the typeset PDF's structure tree is not one the form can read")
+        nums = reader.resolve(node.get("/Nums")) or []
+        out.update((nums[i], nums[i + 1]) for i in range(0, len(nums) - 1, 2))
+        nodes += [(reader.resolve(kid), depth + 1) for kid in reader.resolve(node.get("/Kids")) or ()]
+    return out
+
+
+def _form_element(reader: Reader, parents: dict[int, Ref], anchor: Anchor) -> tuple[Ref, dict]:
+    """The /Link structure element that refers to the anchor's annotation, made the /Form element that
+    refers to the field in its place (PDF/UA: a widget is tagged /Form, its /TU its name)."""
+    ref = parents.get(anchor.struct_parent)
+    element = reader.object(ref) if isinstance(ref, Ref) else None
+    kids = reader.resolve(element.get("/K")) if isinstance(element, dict) else None
+    kids = kids if isinstance(kids, list) else [kids]
+    refers = any(isinstance(k, dict) and k.get("/Type") == "/OBJR" and k.get("/Obj") == anchor.annotation
+                 for k in map(reader.resolve, kids))
+    if not refers or element.get("/S") != "/Link":
+        raise FormError(f"the typeset PDF tags answer line {anchor.annotation} in a way the form does not know")
+    return ref, {**element, "/S": Name("/Form")}
+
+
+def _dict(reader: Reader, ref, what: str) -> dict:
+    value = reader.resolve(ref)
+    if not isinstance(value, dict):
+        raise FormError(f"the typeset PDF has no {what}")
+    return value
 
 
 def _widget(question, part, rect, parent: "Ref", page: int, appearance: "Ref") -> dict:
@@ -134,141 +205,3 @@ def _appearance(width: float, height: float, font: "Ref") -> "Stream":
     """An empty field's look: nothing, marked as a text field's content (where a viewer puts what is typed)."""
     return Stream({"/Type": Name("/XObject"), "/Subtype": Name("/Form"), "/BBox": [0, 0, width, height],
                    "/Resources": {"/Font": {FONT: font}}}, b"/Tx BMC\nEMC\n")
-
-
-def _existing(annots) -> list:
-    if annots is None:
-        return []
-    annots = annots.get_object()
-    return list(annots) if isinstance(annots, ArrayObject) else []
-
-
-def _drop_places(root: DictionaryObject) -> None:
-    """The catalog without the attached places (the only file Typst attaches to a sheet)."""
-    names = root.get("/Names")
-    if names is None:
-        return
-    names = DictionaryObject(names.get_object())
-    names.pop("/EmbeddedFiles", None)
-    if names:
-        root[NameObject("/Names")] = names
-    else:
-        del root["/Names"]
-    files = root.get("/AF")
-    if files is not None:  # associated files (PDF/A-3), where Typst lists attachments too
-        del root["/AF"]
-
-
-class Name(str):
-    """A PDF name, written as it is ("/Widget"): only the plain names written here."""
-
-
-class Ref(int):
-    """An indirect reference to object number `self`."""
-
-    def pypdf(self) -> IndirectObject:
-        return IndirectObject(int(self), 0, None)
-
-
-class Stream:
-    def __init__(self, entries: dict, data: bytes):
-        self.entries, self.data = entries, data
-
-
-def _serialised(value) -> bytes:
-    """The PDF syntax of a form object: pypdf's writer names and escapes character by character, which
-    for a sheet's fields costs more than the rest of adding them."""
-    if isinstance(value, PdfObject):  # an object read by pypdf (a catalog, a page, the document information)
-        out = io.BytesIO()
-        value.write_to_stream(out)
-        return out.getvalue()
-    if isinstance(value, Name):
-        return value.encode("ascii")
-    if isinstance(value, Ref):
-        return b"%d 0 R" % value
-    if isinstance(value, bool):
-        return b"true" if value else b"false"
-    if isinstance(value, int):
-        return b"%d" % value
-    if isinstance(value, float):
-        return (b"%.2f" % value).rstrip(b"0").rstrip(b".") or b"0"
-    if isinstance(value, str):
-        return _text(value)
-    if isinstance(value, dict):
-        return b"<<" + b"".join(k.encode("ascii") + b" " + _serialised(v) for k, v in value.items()) + b">>"
-    if isinstance(value, (list, tuple)):
-        return b"[" + b" ".join(_serialised(v) for v in value) + b"]"
-    if isinstance(value, Stream):
-        return (_serialised({**value.entries, "/Length": len(value.data)}) + b"\nstream\n" + value.data
-                + b"\nendstream")
-    raise TypeError(f"no PDF form for {type(value).__name__}")
-
-
-_PRINTABLE = re.compile(r"[ -~]*")
-
-
-def _text(text: str) -> bytes:
-    """A PDF text string: printable ASCII as a literal string, anything else as UTF-16BE with its mark."""
-    if _PRINTABLE.fullmatch(text):
-        return b"(" + text.replace("\\", "\\\\").replace("(", "\\(").replace(")", "\\)").encode("ascii") + b")"
-    return b"<" + ("\ufeff" + text).encode("utf-16-be").hex().upper().encode("ascii") + b">"
-
-
-class _Update:
-    """The objects of an incremental update: new ones numbered from the file's /Size, and replacements."""
-
-    def __init__(self, size: int):
-        self.size, self.objects = size, {}
-
-    def add(self, obj) -> Ref:
-        ref = Ref(self.size)
-        self.objects[self.size] = obj
-        self.size += 1
-        return ref
-
-    def put(self, number: int, obj) -> None:
-        self.objects[number] = obj
-
-    def write(self, original: bytes, root: Ref, info: Ref, ids) -> bytes:
-        """`original` followed by these objects, their cross-reference section and a trailer."""
-        out = io.BytesIO()
-        out.write(original)
-        if not original.endswith(b"\n"):
-            out.write(b"\n")
-        offsets = {}
-        for number in sorted(self.objects):
-            offsets[number] = out.tell()
-            out.write(b"%d 0 obj\n%s\nendobj\n" % (number, _serialised(self.objects[number])))
-        start = out.tell()
-        out.write(b"xref\n0 1\n0000000000 65535 f\r\n")  # the free list's head, as in every section
-        for first, numbers in _runs(sorted(offsets)):
-            out.write(b"%d %d\n" % (first, len(numbers)))
-            out.writelines(b"%010d 00000 n\r\n" % offsets[n] for n in numbers)
-        trailer = {"/Size": self.size, "/Root": root, "/Info": info, "/Prev": _startxref(original)}
-        if ids is not None:
-            trailer["/ID"] = ids
-        out.write(b"trailer\n" + _serialised(trailer) + b"\n")
-        out.write(b"startxref\n%d\n%%%%EOF\n" % start)
-        return out.getvalue()
-
-
-def _runs(numbers: list[int]):
-    """Consecutive object numbers grouped: [3, 4, 9] -> (3, [3, 4]), (9, [9])."""
-    run: list[int] = []
-    for n in numbers:
-        if run and n != run[-1] + 1:
-            yield run[0], run
-            run = []
-        run.append(n)
-    if run:
-        yield run[0], run
-
-
-_STARTXREF = re.compile(rb"startxref\s+(\d+)\s+%%EOF\s*$")
-
-
-def _startxref(pdf: bytes) -> int:
-    found = _STARTXREF.search(pdf[-64:])
-    if not found:
-        raise FormError("the typeset PDF does not end with a cross-reference offset")
-    return int(found.group(1))
