@@ -57,16 +57,12 @@ class Stream:
 
 # ---- reading ----------------------------------------------------------------------------------------
 
-_TOKEN = re.compile(rb"""
-    (?:\s|%[^\r\n]*)*                                   # white space and comments
-    (?:(?P<delim><<|>>|\[|\])
-      |(?P<name>/[^\s/\[\]()<>{}%]*)
-      |(?P<ref>\d+)\s+0\s+R(?![^\s/\[\]()<>{}%])
-      |(?P<int>[+-]?\d+)(?![.\d])
-      |(?P<real>[+-]?(?:\d+\.\d*|\.\d+))
-      |(?P<literal>\((?:[^()\\]|\\.|\((?:[^()\\]|\\.)*\))*\))   # a string, with parentheses nested once
-      |(?P<hex><[0-9A-Fa-f\s]*>)
-      |(?P<word>true|false|null|endobj|stream|obj))""", re.X | re.S)
+#: One token: a delimiter, a name, a string (parentheses nested once), a hex string, a comment, a run of
+#: regular characters (a number, a keyword), or any other byte (a stray parenthesis, brace: refused).
+_TOKENS = re.compile(rb"<<|>>|\[|\]|/[^\s/\[\]()<>{}%]*|\((?:[^()\\]|\\.|\((?:[^()\\]|\\.)*\))*\)"
+                     rb"|<[0-9A-Fa-f\s]*>|%[^\r\n]*|[^\s/\[\]()<>{}%]+|\S", re.S)  # \S: any other byte, refused
+_INTEGER = re.compile(rb"[+-]?\d+")
+_REAL = re.compile(rb"[+-]?(?:\d+\.\d*|\.\d+)")
 _WORDS = {b"true": True, b"false": False, b"null": None}
 _OBJECT = re.compile(rb"\s*(\d+)\s+(\d+)\s+obj")
 _STARTXREF = re.compile(rb"startxref\s+(\d+)\s+%%EOF\s*$")
@@ -97,9 +93,11 @@ class Reader:
             first, count = int(section.group(1)), int(section.group(2))
             self._sections.append((first, count, section.end()))
             at = section.end() + 20 * count
-        if not data.startswith(b"trailer", _skip_space(data, at)):
+        at = _skip_space(data, at)
+        end = data.find(b"startxref", at)
+        if not data.startswith(b"trailer", at) or end < 0:
             raise PdfSyntaxError("the cross-reference table is not followed by a trailer")
-        self.trailer, _ = self._value(_skip_space(data, at) + len(b"trailer"))
+        self.trailer = parse(data[at + len(b"trailer"):end])
         if not isinstance(self.trailer, dict) or "/Prev" in self.trailer:
             raise PdfSyntaxError("the PDF has been updated since it was typeset")
         self._cache: dict[int, object] = {}
@@ -112,10 +110,18 @@ class Reader:
         header = _OBJECT.match(self.data, offset)
         if not header or int(header.group(1)) != number:
             raise PdfSyntaxError(f"object {number} is not where the cross-reference table puts it")
-        value, at = self._value(header.end())
-        word = _TOKEN.match(self.data, at)
-        if not word or word.group("word") != b"endobj":
-            raise PdfSyntaxError(f"object {number} is a stream or does not end")
+        start = end = header.end()
+        while True:  # to its "endobj" (a string holding the word ends no object: the next one is tried)
+            end = self.data.find(b"endobj", end)
+            if end < 0:
+                raise PdfSyntaxError(f"object {number} does not end")
+            try:
+                value = parse(self.data[start:end])
+                break
+            except PdfSyntaxError as exc:
+                if "stream" in str(exc):
+                    raise PdfSyntaxError(f"object {number} is a stream") from None
+                end += len(b"endobj")
         self._cache[number] = value
         return value
 
@@ -132,46 +138,48 @@ class Reader:
                 return int(entry[:10])
         raise PdfSyntaxError(f"object {number} is not in the cross-reference table")
 
-    def _value(self, at: int):
-        """The value starting at `at`, and where it ends: tokens read by one scanner, containers built on a
-        stack (a dictionary is collected as its keys and values, paired when it closes)."""
-        scanner = _TOKEN.scanner(self.data, at)
-        stack: list[tuple[bytes, list]] = [(b"", [])]
-        while True:
-            token = scanner.match()
-            if token is None:
-                raise PdfSyntaxError(f"no PDF object at byte {at}")
-            kind = token.lastgroup
-            text = token.group(kind)
-            if kind == "delim":
-                if text in (b"<<", b"["):
-                    if len(stack) > MAX_NESTING:
-                        raise PdfSyntaxError("objects nested too deep")
-                    stack.append((text, []))
-                    continue
-                opened, items = stack.pop()
-                if (opened, text) not in ((b"<<", b">>"), (b"[", b"]")) or not stack:
-                    raise PdfSyntaxError(f"unbalanced {text.decode()} at byte {token.start(kind)}")
-                value = items if text == b"]" else _paired(items)
-            elif kind == "name":
-                value = Name(text.decode("latin-1"))
-            elif kind == "ref":
-                value = Ref(int(text))
-            elif kind == "int":
-                value = int(text)
-            elif kind == "real":
-                value = Number(text)
-            elif kind == "literal":
-                value = String(text)
-            elif kind == "hex":
-                value = String(_SPACE.sub(b"", text))
-            elif text in _WORDS:
-                value = _WORDS[text]
-            else:
-                raise PdfSyntaxError(f"unexpected {text.decode()} at byte {token.start(kind)}")
-            stack[-1][1].append(value)
-            if len(stack) == 1:
-                return value, token.end()
+
+def parse(text: bytes):
+    """The one PDF value `text` holds: tokens found by one regular expression, containers built on a stack (a
+    dictionary collected as its keys and values, paired when it closes, a reference from the two integers
+    before its R)."""
+    stack: list[tuple[bytes, list]] = [(b"", [])]
+    for token in _TOKENS.findall(text):
+        first = token[0]
+        if first == 0x2F:  # /
+            value = Name(token.decode("latin-1"))
+        elif token in (b"<<", b"["):
+            if len(stack) > MAX_NESTING:
+                raise PdfSyntaxError("objects nested too deep")
+            stack.append((token, []))
+            continue
+        elif token in (b">>", b"]"):
+            opened, items = stack.pop()
+            if (opened, token) not in ((b"<<", b">>"), (b"[", b"]")) or not stack:
+                raise PdfSyntaxError(f"unbalanced {token.decode()}")
+            value = items if token == b"]" else _paired(items)
+        elif (first == 0x28 and len(token) > 1) or (first == 0x3C and len(token) > 1):  # ( or <
+            value = String(token if first == 0x28 else _SPACE.sub(b"", token))
+        elif first == 0x25:  # a comment
+            continue
+        elif token == b"R":
+            items = stack[-1][1]
+            if len(items) < 2 or type(items[-1]) is not int or type(items[-2]) is not int or items[-1] != 0:
+                raise PdfSyntaxError("a reference that is not to an object of generation 0")
+            items[-2:] = [Ref(items[-2])]
+            continue
+        elif token.isdigit() or _INTEGER.fullmatch(token):
+            value = int(token)
+        elif token in _WORDS:
+            value = _WORDS[token]
+        elif _REAL.fullmatch(token):
+            value = Number(token)
+        else:
+            raise PdfSyntaxError(f"unexpected {token[:20].decode('latin-1')!r}" + (" (a stream)" if token == b"stream" else ""))
+        stack[-1][1].append(value)
+    if len(stack) != 1 or len(stack[0][1]) != 1:
+        raise PdfSyntaxError("not one complete PDF value")
+    return stack[0][1][0]
 
 
 def _paired(items: list) -> dict:
@@ -212,32 +220,52 @@ def _unescape(body: bytes) -> bytes:
 def serialised(value) -> bytes:
     """The PDF syntax of a value: read ones as they were written, new ones (str as text strings,
     floats to two decimals, enough for points on a page) written here."""
-    if isinstance(value, Name):
-        return value.encode("latin-1")
-    if isinstance(value, Ref):
-        return b"%d 0 R" % value
-    if isinstance(value, bool):
-        return b"true" if value else b"false"
-    if isinstance(value, Number):
-        return value.text
-    if isinstance(value, int):
-        return b"%d" % value
-    if isinstance(value, float):
-        return (b"%.2f" % value).rstrip(b"0").rstrip(b".") or b"0"
-    if isinstance(value, String):
-        return bytes(value)
-    if isinstance(value, str):
-        return text_string(value)
-    if value is None:
-        return b"null"
-    if isinstance(value, dict):
-        return b"<<" + b"".join(k.encode("latin-1") + b" " + serialised(v) for k, v in value.items()) + b">>"
-    if isinstance(value, (list, tuple)):
-        return b"[" + b" ".join(serialised(v) for v in value) + b"]"
-    if isinstance(value, Stream):
-        return (serialised({**value.entries, "/Length": len(value.data)}) + b"\nstream\n" + value.data
-                + b"\nendstream")
+    out: list[bytes] = []
+    _write(value, out)
+    return b"".join(out)
+
+
+def _write(value, out: list) -> None:
+    kind = type(value)
+    if kind is dict:
+        out.append(b"<<")
+        for key, item in value.items():
+            out.append(key.encode("latin-1"))
+            out.append(b" ")
+            _write(item, out)
+        out.append(b">>")
+    elif kind is list or kind is tuple:
+        out.append(b"[")
+        for i, item in enumerate(value):
+            if i:
+                out.append(b" ")
+            _write(item, out)
+        out.append(b"]")
+    elif kind is Stream:
+        _write({**value.entries, "/Length": len(value.data)}, out)
+        out += (b"\nstream\n", value.data, b"\nendstream")
+    else:
+        out.append(_ATOMS[kind](value) if kind in _ATOMS else _atom(value))
+
+
+def _atom(value) -> bytes:
+    for kind, write in _ATOMS.items():  # a subclass of one of the kinds (an IntEnum, a str subclass)
+        if isinstance(value, kind) and kind is not bool:
+            return write(value)
     raise TypeError(f"no PDF form for {type(value).__name__}")
+
+
+_ATOMS = {
+    Name: lambda v: v.encode("latin-1"),
+    Ref: lambda v: b"%d 0 R" % v,
+    bool: lambda v: b"true" if v else b"false",
+    Number: lambda v: v.text,
+    int: lambda v: b"%d" % v,
+    float: lambda v: (b"%.2f" % v).rstrip(b"0").rstrip(b".") or b"0",
+    String: bytes,
+    str: lambda v: text_string(v),
+    type(None): lambda v: b"null",
+}
 
 
 _PRINTABLE = re.compile(r"[ -~]*")
