@@ -122,3 +122,11 @@ def test_an_update_reads_back_in_pypdf_with_the_objects_it_replaced(typeset):
     reader = PdfReader(io.BytesIO(data), strict=True)
     assert len(reader.pages) == len(PdfReader(io.BytesIO(typeset["sheet"])).pages)
     assert data.startswith(typeset["sheet"]) and reader.trailer["/Root"]["/Pages"]["/Count"] >= 1
+
+
+def test_a_string_holding_endobj_does_not_end_its_object_and_a_stray_byte_is_refused():
+    assert plain(Reader(document(b"<</Title(the word endobj here)/N 1>>")).object(1)) == \
+        {"/Title": "the word endobj here", "/N": 1.0}
+    for broken in (b"<</A (unclosed>>", b"<</A 1 }>>", b"<</A [1 2>>", b"<</A 1 1 R>>", b"<<1 2>>"):
+        with pytest.raises(PdfSyntaxError):
+            Reader(document(broken)).object(1)
