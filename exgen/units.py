@@ -96,6 +96,11 @@ def unit_info(text: str) -> UnitInfo:
     return known if known is not None else _ask_pint(text)
 
 
+def known_units() -> tuple[str, ...]:
+    """The units stored in data/unit_table.tsv: every unit the bank writes and those students commonly type."""
+    return tuple(_unit_table())
+
+
 def spelled(text: str) -> str:
     """A unit as pint spells it in full ("N*m" -> "newton * meter"), stored or asked."""
     known = _unit_table_rows().get(text)

@@ -16,7 +16,7 @@ from threading import Lock
 
 from graders.grade import grade_variant
 from graders.marking import is_blank
-from graders.results import BLANK, UNREADABLE, PartResult
+from graders.results import BLANK, CORRECT, UNREADABLE, PartResult
 
 from exgen.errors import ExgenError
 from exgen.figures import figure_svg, key_figure_svgs
@@ -56,11 +56,13 @@ class Problem:
 
 @dataclass(frozen=True)
 class State:
-    """What the student has done on a problem: the latest check of each part, hints shown per part."""
+    """What the student has done on a problem: the latest check of each part, hints shown per part, the
+    parts ever answered right (against the key: their numbers may now be shown in hints)."""
 
     checks: dict[str, CheckRow]
     hints: dict[str, int]
     solution: bool
+    right: frozenset[str] = frozenset()
 
 
 def variant_digest(variant: Variant) -> str:
@@ -175,13 +177,15 @@ class Practice:
     # ---- answering --------------------------------------------------------------------------
 
     def state(self, problem: Problem) -> State:
-        latest = {}
+        latest, right = {}, set()
         for check in self.store.checks(problem.id):
             latest[check.part] = check
+            if check.status == CORRECT:
+                right.add(check.part)
         shown: dict[str, int] = {}
         for hint in self.store.hints(problem.id):
             shown[hint.part] = max(shown.get(hint.part, 0), hint.level)
-        return State(latest, shown, self.store.solution_shown(problem.id))
+        return State(latest, shown, self.store.solution_shown(problem.id), frozenset(right))
 
     def check(self, problem: Problem, part_id: str, text: str) -> PartResult:
         """Mark one part against the variant, with the latest answers to the others for error carried
@@ -194,15 +198,19 @@ class Practice:
             self.store.add_check(problem.id, part_id, text, result.status, result.mistake, result.message)
         return result
 
-    def hints(self, problem: Problem, part_id: str) -> tuple[Hint, ...]:
+    def hints(self, problem: Problem, part_id: str, state: State | None = None) -> tuple[Hint, ...]:
+        """The part's hints as they may be shown now: no number in them is the answer to a part not yet
+        answered right (`state`, if already read)."""
         self._part(problem, part_id)
-        return self._memo(problem, f"hints:{part_id}",
-                          lambda: hint_ladder(problem.variant, part_id, self.worked(problem)))
+        right = (state or self.state(problem)).right
+        return self._memo(problem, f"hints:{part_id}:{','.join(sorted(right))}",
+                          lambda: hint_ladder(problem.variant, part_id, self.worked(problem), right))
 
     def next_hint(self, problem: Problem, part_id: str) -> tuple[int, Hint] | None:
         """The next hint of the part's ladder (recorded as shown), or None when there are no more."""
-        ladder = self.hints(problem, part_id)
-        level = self.state(problem).hints.get(part_id, 0) + 1
+        state = self.state(problem)
+        ladder = self.hints(problem, part_id, state)
+        level = state.hints.get(part_id, 0) + 1
         if level > len(ladder):
             return None
         self.store.add_hint(problem.id, part_id, level)

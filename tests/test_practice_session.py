@@ -126,14 +126,15 @@ def test_the_template_hints_come_first_filled_with_the_variant(tiny):
     assert tiny.state(problem).hints == {"a": 2}
 
 
-def test_the_default_hints_are_the_steps_towards_the_part_then_its_formula_without_numbers(practice):
+def test_the_default_hints_are_the_steps_towards_the_part_then_its_formula_without_its_result(practice):
     problem = practice.next_problem(Scope("template", "belts.flat_belt_power"))
     worked = practice.worked(problem)
     answering = next(line for line in worked.lines if "a" in line.parts)
     ladder = practice.hints(problem, "a")
     assert [h.line.name for h in ladder[:-1]] == [line.name for line in worked.lines[:worked.lines.index(answering)]]
     last = ladder[-1].line
-    assert last.name == answering.name and last.values == () and last.substituted is None
+    assert last.name == answering.name and last.values == () and last.parts == ()
+    assert last.substituted == answering.substituted  # the givens put in: θ = 180° − 2 × 5.123°
     later = practice.hints(problem, "c")  # from after (b)'s line
     answered_b = next(i for i, line in enumerate(worked.lines) if "b" in line.parts)
     assert later[0].line.name == worked.lines[answered_b + 1].name

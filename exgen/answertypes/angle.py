@@ -10,7 +10,7 @@ from .. import units
 from ..template import PartSpec, Tolerance
 from .base import Mistake, exact_quantity
 from .lms import NumericGap, wrong_numbers
-from .number import Number
+from .number import Number, readings
 from .quantity import accepted_units
 
 #: Angles: within half a degree, compared modulo a full turn.
@@ -67,6 +67,12 @@ class Angle(Number):
     def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
         to_deg = self._to_deg(part)
         return angle(given * to_deg, expected * to_deg, part.tol.rel * widen, part.tol.abs * widen)
+
+    prefixed = False
+
+    def gives_away(self, value, answer) -> bool:
+        """A direction in degrees or radians (its mirror image, −θ, is another direction)."""
+        return any(self.matches(v, answer.value, answer.part) for v in readings(value, answer.part.unit))
 
     def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
         """None: directions a turn apart match, so no distance bounds them."""

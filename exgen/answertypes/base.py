@@ -181,6 +181,12 @@ class AnswerType:
         except (TypeError, ValueError, ArithmeticError):
             return True
 
+    def gives_away(self, value, answer) -> bool:
+        """Whether a value shown to a student (a hint's value, a number in a formula) would hand them
+        `answer`: a number read in any unit of the answer's kind, with either sign, right within the
+        part's tolerance (a choice: the word itself). False for types nothing shown can give away."""
+        return False
+
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         """Why a wrong answer no mistake explains is wrong."""
         return "not the expected answer"

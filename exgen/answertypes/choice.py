@@ -91,6 +91,10 @@ class Choice(AnswerType):
     def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
         return choice(str(given), str(expected), choice_aliases())
 
+    def gives_away(self, value, answer) -> bool:
+        """A worked value that is the chosen word itself ("clockwise")."""
+        return isinstance(value, str) and choice(value, str(answer.value), choice_aliases())
+
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return WRONG_CHOICE
 

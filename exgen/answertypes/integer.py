@@ -12,6 +12,7 @@ from ..errors import FormatProblem
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, asked_unit, refuse_long
 from .lms import NumericGap, wrong_numbers
+from .number import readings
 from .quantity import accepted_units, in_unit
 
 NOT_EXACT = "not the expected whole number"
@@ -72,6 +73,12 @@ class Integer(AnswerType):
     def reach(self, value, part: PartSpec, widen: float = 1.0) -> float | None:
         """Exact: only the value itself matches."""
         return 0.0 if isinstance(value, (int, float)) and math.isfinite(value) else None
+
+    def gives_away(self, value, answer) -> bool:
+        """A count is its own number; one with a unit is read in any unit of its kind."""
+        unit = answer.part.unit
+        shown = readings(value, unit) if unit else list(readings(value, ""))[:1]  # a count is no percentage
+        return any(integer(abs(value), abs(answer.value)) for value in shown)
 
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_EXACT if float(given.value).is_integer() else NOT_A_WHOLE_NUMBER

@@ -12,7 +12,7 @@ from ..errors import ExgenError
 from ..template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report, exact_quantity, finite
 from .lms import NumericGap, wrong_numbers
-from .quantity import accepted_units, in_unit, unit_name
+from .quantity import accepted_units, in_unit, unit_name, units_of_kind
 
 #: A number is right within 1 % (textbook working rounds to 3-4 figures) ...
 REL_TOL = 0.01
@@ -23,6 +23,10 @@ SIG_FIG_SLACK = 0.51
 MAX_SIG = 15
 #: Within this many tolerances a wrong answer is "close": most likely the right method rounded too early.
 CLOSE_FACTOR = 3
+
+#: A number shown in a hint is read with these prefixes too (k, m) when it is checked for giving an answer away:
+#: kinds with one stored unit (N·s/m) are written with a prefix as well.
+PREFIXES = (1.0, 1e3, 1e-3)
 
 #: Units students confuse within one kind; a bare number matching the answer in another is named.
 CONFUSABLE = (("deg", "rad"), ("rpm", "rad/s", "Hz"))
@@ -152,6 +156,14 @@ class Number(AnswerType):
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return NOT_WITHIN.format(tol=self.tolerance_text(part))
 
+    #: Whether a number in a hint is also read with a prefix (not for angles: degrees have none).
+    prefixed = True
+
+    def gives_away(self, value, answer) -> bool:
+        part = answer.part
+        return any(self.matches(value, answer.value, part) or self.matches(-value, answer.value, part)
+                   for value in readings(value, part.unit, PREFIXES if self.prefixed else (1.0,)))
+
     def nudges(self, value, part: PartSpec) -> tuple[float, ...]:
         return (value * 1.02, value * 0.5, value * 2, -value) if value else (1.0, -1.0)
 
@@ -236,6 +248,20 @@ class Number(AnswerType):
 
     def sample_part(self) -> PartSpec:
         return PartSpec("a", "the power transmitted", "P", "kW", type=self.name, tol=self.default_tol)
+
+
+def readings(number: float, unit: str, prefixes=(1.0,)):
+    """What a number may stand for in `unit`: read in each unit of its kind (units_of_kind), and with each
+    of `prefixes`. Nothing for a value that is not a finite number."""
+    if isinstance(number, bool) or not isinstance(number, (int, float)) or not math.isfinite(number):
+        return
+    for other in units_of_kind(unit):
+        try:
+            value = units.convert(number, other, unit)
+        except ExgenError:
+            continue
+        for prefix in prefixes:
+            yield value * prefix
 
 
 def _same_unit(a: str, b: str) -> bool:

@@ -18,7 +18,7 @@ from .angle import ANGLE_ABS_TOL_DEG, angle, direction_slip
 from .base import AnswerType, Given, Mistake, Report, asked_unit, exact_quantity, refuse_long
 from .lms import NumericGap, wrong_numbers
 from .quantity import accepted_units
-from .number import REL_TOL, numeric
+from .number import PREFIXES, REL_TOL, numeric, readings
 from .quantity import in_unit
 
 _POLAR = re.compile(r"(?:(add|remove|subtract|take away)\s+)?(.+?)\s*(?:\bat\b|@|\u2220|<)\s*(.+)", re.IGNORECASE)
@@ -154,6 +154,12 @@ class PolarType(AnswerType):
 
     def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
         return polar(given, expected, part.tol.rel * widen, part.tol.abs * widen)
+
+    def gives_away(self, value, answer) -> bool:
+        """Either half: the size in any unit of its kind, or the direction in degrees or radians."""
+        part, key = answer.part, answer.value
+        return any(numeric(abs(v), key.magnitude, part.tol.rel) for v in readings(value, part.unit, PREFIXES)) or \
+            any(angle(v, key.angle_deg, 0.0, part.tol.abs) for v in readings(value, "deg"))
 
     def wrong_message(self, given: Given, part: PartSpec) -> str:
         return f"not within {self.tolerance_text(part)} of the expected value"

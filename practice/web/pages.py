@@ -111,7 +111,7 @@ def part_context(practice: Practice, problem: Problem, part, state: State, asked
     hinted = state.hints.get(part.id, 0)
     # the ladder (made from the worked solution) only once a hint is asked for: until then there may be more
     known = bool(hinted or asked)
-    ladder = practice.hints(problem, part.id) if known else ()
+    ladder = practice.hints(problem, part.id, state) if known else ()
     return {
         "id": part.id, "ask": HTML.text(problem.variant.asks[part.id]), "unit": kind.hint(part),
         "example": kind.format_hint(part), "answer": check.answer if check else "",
