@@ -155,3 +155,42 @@ def test_a_sheet_form_offers_choices_exactly_where_a_learning_system_does(kind):
     for choice in offered:
         assert answers.matches(read(choice, part).value, choice, part)
         assert [c for c in offered if answers.matches(read(choice, part).value, c, part)] == [choice]
+
+
+def _answer(part: PartSpec, value):
+    from types import SimpleNamespace
+
+    return SimpleNamespace(part=part, value=value)
+
+
+@pytest.mark.parametrize("part, key, shown, gives", [
+    (PartSpec("c", "f", "f", "Hz", type="number", tol=Tolerance(rel=0.01)), 7.49, 47.08, True),    # ω in rad/s
+    (PartSpec("c", "f", "f", "Hz", type="number", tol=Tolerance(rel=0.01)), 7.49, 449.6, True),    # in rpm
+    (PartSpec("c", "f", "f", "Hz", type="number", tol=Tolerance(rel=0.01)), 7.49, 7.49, True),
+    (PartSpec("c", "f", "f", "Hz", type="number", tol=Tolerance(rel=0.01)), 7.49, 8.0, False),
+    (PartSpec("b", "q", "q", "N*m", type="number", tol=Tolerance(rel=0.01)), 822.0, 0.822, True),  # kN·m
+    (PartSpec("b", "q", "q", "N*m", type="number", tol=Tolerance(rel=0.01)), 822.0, -822.0, True),
+    (PartSpec("e", "η", "e", "", type="number", tol=Tolerance(rel=0.01)), 0.85, 85.0, True),       # percent
+    (PartSpec("a", "θ", "t", "deg", type="angle", tol=Tolerance(abs=0.5)), 168.8, 2.946, True),    # radians
+    (PartSpec("a", "θ", "t", "deg", type="angle", tol=Tolerance(abs=0.5)), 168.8, -191.2, True),   # a turn less
+    (PartSpec("a", "θ", "t", "deg", type="angle", tol=Tolerance(abs=0.5)), 30.0, -30.0, False),    # mirrored
+    (PartSpec("n", "n", "n", "", type="integer"), 4, 4.0, True),
+    (PartSpec("n", "n", "n", "", type="integer"), 4, 400.0, False),  # a count is no percentage
+    (PartSpec("k", "k", "k", "", type="choice", options={"choices": ("clockwise", "anticlockwise")}),
+     "clockwise", "Clockwise", True),
+    (PartSpec("k", "k", "k", "", type="choice", options={"choices": ("clockwise", "anticlockwise")}),
+     "clockwise", 1.0, False),
+])
+def test_a_value_shown_gives_an_answer_away_in_any_unit_of_its_kind(part, key, shown, gives):
+    assert answer_type(part).gives_away(shown, _answer(part, key)) is gives
+
+
+def test_either_half_of_a_polar_answer_is_given_away():
+    from exgen.answertypes.polar import Polar
+
+    part = PartSpec("a", "m r", "mr", "kg*m", type="polar", tol=Tolerance(rel=0.01, abs=0.5),
+                    options={"angle": "theta"})
+    answer = _answer(part, Polar(0.57, 48.0))
+    kind = answer_type(part)
+    assert kind.gives_away(570.0, answer) and kind.gives_away(0.8378, answer) and kind.gives_away(48.2, answer)
+    assert not kind.gives_away(0.6, answer)
