@@ -1,15 +1,25 @@
-"""How well a student knows a topic, and which problem should come next. Pure functions over outcomes.
+"""How well a student knows a topic, and which problem should come next. Pure functions over evidence.
 
-The estimate is an exponentially weighted success rate with a Beta(1, 1) prior: each problem's
-credit (the share of its marks earned at the first try) counts with weight DECAY^k, k being how many
-problems of the topic came after it, so
-    mastery = (1 + Σ wₖ·creditₖ) / (2 + Σ wₖ).
-Why this and not the others the literature offers: Bayesian knowledge tracing needs four parameters
-per skill (prior, learn, slip, guess) fitted to a class's data, and Elo needs item difficulties
-calibrated across many students; practice runs for one student, offline, with neither. A weighted
-rate needs no calibration, forgets old evidence so that a student who has caught up is seen to have
-(DECAY 0.8 remembers about the last five problems), and the prior keeps two lucky answers from
-reading as mastery: five right in a row are needed to pass MASTERED from nothing.
+The estimate is an Elo rating of the student against the parts answered (Pelánek, "Applications of the
+Elo rating system in adaptive educational systems", Computers & Education 98, 2016): the chance of a
+right first answer to a part is σ(θ), and each piece of evidence moves the rating by
+    θ ← θ + K·w·(outcome − σ(θ)),
+w being the share of a problem's marks it covers. Every part counts as of average difficulty (rating
+0): practice runs for one student, offline, with no class to calibrate parts against. Mastery is σ(θ),
+from 0.5 with nothing tried.
+
+Why Elo: a right answer always raises the rating and a wrong one always lowers it (outcome − σ(θ) has
+the outcome's sign), and since K·w/4 < 1 each update keeps the order of ratings, so a history with any
+answer put right, or with more right evidence, never shows less. Bayesian knowledge tracing applies its
+chance of learning after every attempt, so that a wrong answer raises a low estimate, and needs four
+parameters per skill fitted to a class's data. A constant K forgets old evidence, so a student who has
+caught up is seen to: with K = 0.9 five right problems in a row reach MASTERED from nothing, four do not.
+
+Helping costs evidence, on the parts helped: each hint shown before a part's first answer counts as a
+wrong answer on HINT_COST of the part (at most MAX_HINT_COST in all), the worked solution as a wrong
+answer on SOLUTION_COST of every part not yet answered, and what is left of the part goes to its first
+answer. A part answered after the worked solution counts for nothing more; a part left alone, unhelped,
+is no evidence at all.
 
 The next problem is drawn at random with weights 1 − mastery (at least FLOOR): first a topic, then a
 template within it, so weak topics come up more, mastered ones less but still now and then, and one
@@ -17,79 +27,115 @@ not yet tried (0.5) between the two.
 """
 from __future__ import annotations
 
+import math
 import random
 from dataclasses import dataclass
 from typing import Iterable, Mapping, Sequence
 
-DECAY = 0.8
-MASTERED = 0.8
-WEAK = 0.5
+K = 0.9
+#: The levels, in whole percent as shown: from MASTERED a topic is mastered, below WEAK it is weak.
+MASTERED = 80
+WEAK = 50
 FLOOR = 0.05
-HINT_CREDIT = 0.5   # a part right after hints earns half its credit; after the worked solution, none
+HINT_COST = 0.25
+MAX_HINT_COST = 0.75
+SOLUTION_COST = 0.5
 
 
 @dataclass(frozen=True)
-class PartOutcome:
-    """How a part went at the first readable answer."""
+class Evidence:
+    """One outcome on a share of a problem: right or wrong, on `weight` of the problem's marks."""
 
-    points: float
-    answered: bool = False      # a readable answer was checked
-    right: bool = False         # that first answer was right (error carried forward counts)
-    hinted: bool = False        # a hint was shown before it
-    solution_first: bool = False  # the worked solution was shown before any answer
-
-
-@dataclass(frozen=True)
-class Outcome:
-    """One problem as evidence: the credit earned, and how much of the problem it covers (0 to 1)."""
-
-    credit: float
+    right: bool
     weight: float
 
 
-def problem_outcome(parts: Iterable[PartOutcome]) -> Outcome | None:
-    """A problem's credit over the parts that show anything; None when none does (a problem skipped)."""
-    total = earned = covered = 0.0
+@dataclass(frozen=True)
+class PartEvents:
+    """What happened on one part of a problem, as the progress file records it (times in seconds)."""
+
+    share: float                                # the part's share of the problem's marks
+    first: tuple[float, bool] | None = None     # when the first readable answer came, and whether it was right
+    hints: tuple[float, ...] = ()               # when each of its hints was shown
+
+
+def problem_evidence(parts: Iterable[PartEvents], solution: float | None = None) -> tuple[Evidence, ...]:
+    """A problem's evidence in the order it arose; `solution` is when the worked solution was first shown."""
+    events: list[tuple[float, Evidence]] = []
     for part in parts:
-        total += part.points
-        if part.solution_first:
-            covered += part.points
-        elif part.answered:
-            covered += part.points
-            earned += part.points * (HINT_CREDIT if part.hinted else 1.0) * part.right
-    if covered == 0 or total == 0:
-        return None
-    return Outcome(earned / covered, covered / total)
+        answered = part.first is not None and (solution is None or part.first[0] <= solution)
+        until = part.first[0] if answered else (solution if solution is not None else math.inf)
+        cost = 0.0
+        for at in sorted(h for h in part.hints if h <= until):
+            step = min(HINT_COST, MAX_HINT_COST - cost)
+            if step <= 0:
+                break
+            cost += step
+            events.append((at, Evidence(False, part.share * step)))
+        if answered:
+            events.append((part.first[0], Evidence(part.first[1], part.share * (1.0 - cost))))
+        elif solution is not None:
+            events.append((solution, Evidence(False, part.share * min(SOLUTION_COST, 1.0 - cost))))
+    return tuple(e for _, e in sorted(events, key=lambda pair: pair[0]) if e.weight > 0)
+
+
+def expected(rating: float) -> float:
+    """The chance of a right first answer at this rating (a part of average difficulty)."""
+    return 1.0 / (1.0 + math.exp(-rating))
 
 
 @dataclass(frozen=True)
 class Mastery:
-    alpha: float = 1.0
-    beta: float = 1.0
-    problems: int = 0
+    rating: float = 0.0
+    problems: int = 0     # problems that gave evidence
 
     @property
     def mean(self) -> float:
-        return self.alpha / (self.alpha + self.beta)
+        return expected(self.rating)
+
+    @property
+    def percent(self) -> int:
+        """Mastery in whole percent, rounded down: what every page shows, and what its level is read from,
+        so that a topic shown at 80 % is mastered and one at 79 % is not."""
+        return math.floor(100 * self.mean + 1e-9)
+
+    @property
+    def text(self) -> str:
+        return f"{self.percent} %" if self.problems else "not started"
 
     @property
     def level(self) -> str:
-        if self.problems == 0:
-            return "not started"
-        if self.mean >= MASTERED:
-            return "mastered"
-        return "learning" if self.mean >= WEAK else "weak"
+        return level(self.percent) if self.problems else "not started"
 
 
-def mastery(outcomes: Sequence[Outcome]) -> Mastery:
-    """The estimate from a topic's (or template's) outcomes, oldest first."""
-    alpha = beta = 1.0
-    n = len(outcomes)
-    for k, outcome in enumerate(outcomes):
-        weight = DECAY ** (n - 1 - k) * outcome.weight
-        alpha += weight * outcome.credit
-        beta += weight * (1.0 - outcome.credit)
-    return Mastery(alpha, beta, n)
+def level(percent: int) -> str:
+    if percent >= MASTERED:
+        return "mastered"
+    return "learning" if percent >= WEAK else "weak"
+
+
+def mastery(problems: Sequence[Sequence[Evidence]]) -> Mastery:
+    """The estimate from a topic's (or template's) problems, oldest first, each its evidence in order."""
+    rating, counted = 0.0, 0
+    for evidence in problems:
+        counted += bool(evidence)
+        for e in evidence:
+            rating += K * e.weight * (e.right - expected(rating))
+    return Mastery(rating, counted)
+
+
+_WORDS = {0.25: "a quarter", 0.5: "half", 0.75: "three quarters", 1.0: "all"}
+
+
+def costs() -> dict[str, str]:
+    """What help costs, in the words the pages and the terminal say it before a student asks."""
+    def words(share: float) -> str:
+        return _WORDS.get(share, f"{share:.0%}")
+
+    return {"hint": f"each hint costs {words(HINT_COST)} of its part's credit (at most {words(MAX_HINT_COST)})",
+            "solution": f"the worked solution costs {words(SOLUTION_COST)} of the credit of every part not "
+                        f"answered yet",
+            "levels": f"mastered from {MASTERED} %, weak below {WEAK} % (rounded down)"}
 
 
 def weight(estimate: Mastery) -> float:

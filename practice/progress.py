@@ -1,8 +1,9 @@
 """Mastery per topic and per template, followed from the progress file as it grows.
 
 Every table of the file only grows, so the tracker reads the rows it has not seen yet (by id) and
-keeps, per problem, what mastery needs: each part's first readable answer and whether a hint or the
-worked solution came before it. Any process may write meanwhile (a terminal and a browser on the
+keeps, per problem, what mastery needs: each part's first readable answer, when each of its hints was
+shown, and when the worked solution was. Mastery is worked out from these events, never stored, so a
+file written by any exgen is read with today's model. Any process may write meanwhile (a terminal and a browser on the
 same file): what it wrote is read at the next refresh.
 """
 from __future__ import annotations
@@ -12,7 +13,7 @@ from dataclasses import dataclass, field
 
 from graders.results import CARRIED, CORRECT, WRONG
 
-from .mastery import Mastery, Outcome, PartOutcome, mastery, problem_outcome
+from .mastery import Evidence, PartEvents, mastery, problem_evidence
 from .store import Store
 
 READABLE = (CORRECT, CARRIED, WRONG)  # a blank or unreadable answer is not evidence
@@ -24,7 +25,7 @@ class _Problem:
     topic: str
     chapter: int
     first: dict[str, tuple[bool, float]] = field(default_factory=dict)  # part -> (right, when)
-    hinted: dict[str, float] = field(default_factory=dict)             # part -> first hint's time
+    hinted: dict[str, list[float]] = field(default_factory=dict)       # part -> when each hint was shown
     solution: float | None = None
     checks: int = 0
     seconds: float = 0.0
@@ -49,7 +50,7 @@ class Progress:
         self.store, self.points = store, points
         self._last: dict[str, int] = {}
         self._problems: dict[int, _Problem] = {}
-        self._outcomes: dict[int, Outcome | None] = {}   # kept until the problem's rows change
+        self._evidence: dict[int, tuple[Evidence, ...]] = {}   # kept until the problem's rows change
         self._tables: dict[str, dict[str, Row]] = {}     # kept until any row is added
         self._lock = threading.Lock()
 
@@ -61,7 +62,7 @@ class Progress:
                     self._last[table] = rows[-1][0]
                     self._tables.clear()
                     for _, row in rows:
-                        self._outcomes.pop(getattr(row, "problem", None) or row.id, None)
+                        self._evidence.pop(getattr(row, "problem", None) or row.id, None)
             for problem_id, row in new["problems"]:
                 self._problems[problem_id] = _Problem(row.template, row.topic, row.chapter)
             for _, check in new["checks"]:
@@ -75,24 +76,22 @@ class Progress:
             for _, hint in new["hints"]:
                 record = self._problems.get(hint.problem)
                 if record is not None:
-                    record.hinted.setdefault(hint.part, hint.at)
+                    record.hinted.setdefault(hint.part, []).append(hint.at)
             for _, shown in new["solutions"]:
                 record = self._problems.get(shown.problem)
                 if record is not None and record.solution is None:
                     record.solution = shown.at
 
-    def outcome(self, record: _Problem) -> Outcome | None:
-        points = self.points(record.template) or {p: 1.0 for p in record.first}
+    def evidence(self, record: _Problem) -> tuple[Evidence, ...]:
+        """A problem's evidence (practice.mastery), each part weighted by its share of the marks."""
+        points = self.points(record.template) or {p: 1.0 for p in {*record.first, *record.hinted}}
+        total = sum(points.values()) or 1.0
         parts = []
         for part_id, worth in points.items():
             first = record.first.get(part_id)
-            before_solution = first is not None and (record.solution is None or first[1] <= record.solution)
-            if first is not None and before_solution:
-                hinted = part_id in record.hinted and record.hinted[part_id] <= first[1]
-                parts.append(PartOutcome(worth, answered=True, right=first[0], hinted=hinted))
-            else:
-                parts.append(PartOutcome(worth, solution_first=record.solution is not None))
-        return problem_outcome(parts)
+            parts.append(PartEvents(worth / total, (first[1], first[0]) if first else None,
+                                    tuple(record.hinted.get(part_id, ()))))
+        return problem_evidence(parts, record.solution)
 
     def table(self, by: str) -> dict[str, Row]:
         """Rows by topic (`by="topic"`) or by template id (`by="template"`), after a refresh."""
@@ -106,14 +105,13 @@ class Progress:
                 grouped.setdefault(record.topic if by == "topic" else record.template, []).append(problem_id)
             rows = {}
             for name, ids in grouped.items():
-                outcomes = [o for o in map(self._outcome, ids) if o is not None]
                 records = [self._problems[i] for i in ids]
-                rows[name] = Row(name, records[0].chapter, mastery(outcomes), len(records),
+                rows[name] = Row(name, records[0].chapter, mastery([self._of(i) for i in ids]), len(records),
                                  sum(r.checks for r in records), sum(r.seconds for r in records))
             self._tables[by] = rows
             return rows
 
-    def _outcome(self, problem_id: int) -> Outcome | None:
-        if problem_id not in self._outcomes:
-            self._outcomes[problem_id] = self.outcome(self._problems[problem_id])
-        return self._outcomes[problem_id]
+    def _of(self, problem_id: int) -> tuple[Evidence, ...]:
+        if problem_id not in self._evidence:
+            self._evidence[problem_id] = self.evidence(self._problems[problem_id])
+        return self._evidence[problem_id]

@@ -237,7 +237,7 @@ def _ask(prompt: str) -> str:
 
 
 def _standing(estimate: Mastery) -> str:
-    return "not started" if estimate.problems == 0 else f"{estimate.mean:.0%} ({estimate.level})"
+    return "not started" if estimate.problems == 0 else f"{estimate.text} ({estimate.level})"
 
 
 def stats_command(path: Path) -> str:
@@ -257,7 +257,7 @@ def stats_text(practice: Practice) -> str:
                      + ("" if chapter.topics else f"  ({practice.catalogue.absent})"))
         for topic in chapter.topics:
             row = rows.get(topic) or Row(topic, chapter.number, Mastery(), 0, 0, 0.0)
-            shown = f"{row.mastery.mean:.0%}" if row.mastery.problems else "-"
+            shown = row.mastery.text if row.mastery.problems else "-"
             lines.append(f"  {topic:<14} {shown:>8}  {row.mastery.level:<12} {row.problems:>8} {row.checks:>8} "
                          f"{_duration(row.seconds):>8}")
     lines.append(f"\nProgress file: {practice.store.path}")

@@ -277,3 +277,34 @@ def test_a_client_gone_mid_body_or_a_body_that_stalls_costs_no_traceback_and_no_
             sock.sendall(f"GET / HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n".encode())
             assert sock.recv(100).startswith(b"HTTP/1.1 200")
     assert "Traceback" not in output[0] and "ClientDisconnect" not in output[0], output[0]
+
+
+def test_every_figure_shown_has_the_level_the_progress_page_states_for_it(practice, monkeypatch):
+    """"Belts: 80 % (learning)", then "79 % (learning)", then "80 % (mastered)": the figure was rounded to
+    the nearest percent and the level read from the unrounded estimate."""
+    import math
+
+    from practice.mastery import Mastery
+    from practice.progress import Row
+    from practice.terminal import stats_text
+    from practice.web import pages
+
+    topics = [t for chapter in practice.catalogue.chapters() for t in chapter.topics]
+    means = [0.795, 0.7996, 0.8, 0.8004, 0.4996, 0.5, 0.5004, 0.123]
+    rows = {t: Row(t, 1, Mastery(math.log(m / (1 - m)), 2), 2, 3, 60.0) for t, m in zip(topics, means)}
+    monkeypatch.setattr(practice, "table", lambda by="topic": rows)
+    page = pages.progress_page(practice)
+    mastered, weak = map(int, re.search(r"mastered from (\d+) % and weak below\s+(\d+) %", page).groups())
+
+    def level(percent: int) -> str:
+        return "mastered" if percent >= mastered else "weak" if percent < weak else "learning"
+
+    table = re.findall(r"<td>(\d+) %</td><td>(\w+)</td>", page)
+    chart = re.findall(r"(\d+) % · (\w+)</text>", page)
+    shown = pages.map_page(practice)
+    listed = re.findall(r'<span class="level">(\d+) % · (\w+)</span>', shown)
+    stats = re.findall(r"(\d+) %\s+(mastered|learning|weak)\b", stats_text(practice))
+    for found in (table, chart, listed, stats):
+        assert len(found) >= len(rows) == len(means)
+        assert all(level(int(percent)) == said for percent, said in found), found
+    assert ("79", "learning") in table and ("80", "mastered") in table and ("49", "weak") in table

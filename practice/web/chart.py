@@ -21,11 +21,11 @@ def mastery_chart(entries: list[dict]) -> str:
            f'aria-labelledby="chart-title chart-desc" class="chart" font-size="13">',
            '<title id="chart-title">Mastery per topic</title>',
            f'<desc id="chart-desc">{escape(_description(entries))}</desc>']
-    threshold = LABEL + BAR * MASTERED
+    threshold = LABEL + BAR * MASTERED / 100
     for i, entry in enumerate(entries):
         y = GAP + ROW * i
         standing = entry["standing"]
-        length = BAR * entry["mastery"].mean if standing["started"] else 0
+        length = BAR * standing["percent"] / 100 if standing["started"] else 0  # the figure shown, not a hair more
         out.append(f'<text x="{LABEL - 8}" y="{y + 17}" text-anchor="end">'
                    f'{escape(entry["name"])} <tspan fill="#666">({entry["chapter"]})</tspan></text>')
         out.append(f'<rect x="{LABEL}" y="{y + 4}" width="{BAR}" height="{ROW - 8}" fill="#f2f2f2"/>')
@@ -38,7 +38,7 @@ def mastery_chart(entries: list[dict]) -> str:
     out.append(f'<line x1="{threshold:.1f}" y1="{GAP}" x2="{threshold:.1f}" y2="{bottom}" stroke="#333" '
                'stroke-dasharray="4 3"/>')
     out.append(f'<text x="{threshold:.1f}" y="{bottom + 16}" text-anchor="middle" fill="#333">'
-               f'mastered from {MASTERED:.0%}</text>')
+               f'mastered from {MASTERED} %</text>')
     out.append("</svg>")
     return "\n".join(out)
 

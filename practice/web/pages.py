@@ -16,7 +16,7 @@ from exgen.echo import shown
 from exgen.figures import Drawn
 from exgen.render.context import figure_caption, key_context, line_context
 from exgen.render.html import HTML
-from ..mastery import Mastery
+from ..mastery import MASTERED, WEAK, Mastery, costs
 from ..progress import Row
 from ..scope import Scope, topic_of
 from ..session import Practice, Problem, State
@@ -28,7 +28,7 @@ def environment() -> jinja2.Environment:
                              autoescape=True, undefined=jinja2.StrictUndefined, trim_blocks=True,
                              lstrip_blocks=True)
     env.filters["math"] = HTML.inline
-    env.filters["percent"] = lambda m: f"{m.mean:.0%}" if m.problems else "–"
+    env.globals.update(mastered=MASTERED, weak=WEAK, costs=costs())
     return env
 
 
@@ -42,8 +42,8 @@ def fragment(name: str, macro: str, *args) -> str:
 
 
 def standing(estimate: Mastery) -> dict:
-    return {"percent": round(100 * estimate.mean) if estimate.problems else 0,
-            "text": f"{estimate.mean:.0%}" if estimate.problems else "not started",
+    """How a topic stands, as every page shows it: the percentage (rounded down) and the level read from it."""
+    return {"percent": estimate.percent if estimate.problems else 0, "text": estimate.text,
             "level": estimate.level, "started": bool(estimate.problems)}
 
 
