@@ -124,16 +124,25 @@ def mastery(problems: Sequence[Sequence[Evidence]]) -> Mastery:
     return Mastery(rating, counted)
 
 
+def next_hint_cost(answered: bool, solution: bool, hints: int) -> float:
+    """What the next hint of a part costs, as a share of the part (problem_evidence's rule)."""
+    if answered or solution:
+        return 0.0
+    return max(0.0, min(HINT_COST, MAX_HINT_COST - HINT_COST * hints))
+
+
 _WORDS = {0.25: "a quarter", 0.5: "half", 0.75: "three quarters", 1.0: "all"}
+
+
+def share_words(share: float) -> str:
+    return _WORDS.get(share, f"{share:.0%}")
 
 
 def costs() -> dict[str, str]:
     """What help costs, in the words the pages and the terminal say it before a student asks."""
-    def words(share: float) -> str:
-        return _WORDS.get(share, f"{share:.0%}")
-
-    return {"hint": f"each hint costs {words(HINT_COST)} of its part's credit (at most {words(MAX_HINT_COST)})",
-            "solution": f"the worked solution costs {words(SOLUTION_COST)} of the credit of every part not "
+    return {"hint": f"each hint costs {share_words(HINT_COST)} of its part's credit (at most "
+                    f"{share_words(MAX_HINT_COST)})",
+            "solution": f"the worked solution costs {share_words(SOLUTION_COST)} of the credit of every part not "
                         f"answered yet",
             "levels": f"mastered from {MASTERED} %, weak below {WEAK} % (rounded down)"}
 

@@ -16,7 +16,7 @@ from threading import Lock
 
 from graders.grade import grade_variant
 from graders.marking import is_blank
-from graders.results import BLANK, CORRECT, UNREADABLE, PartResult
+from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult
 
 from exgen.errors import ExgenError
 from exgen.figures import figure_svg, key_figure_svgs
@@ -35,6 +35,8 @@ CACHED = 256        # variants kept in memory (a page, its checks and its soluti
 EXHAUSTED = "you have met every variant of {label} that could be drawn; choose another topic"
 NO_PROBLEM = "there is no practice problem {id}"
 NO_PART = "the problem has no part {part!r}"
+#: How a part went (Practice.parts_done), besides graders' WRONG and BLANK.
+RIGHT_FIRST, AFTER_HINT, AFTER_SOLUTION = "right first", "right after a hint", "after the solution"
 
 
 class NoProblem(ExgenError, LookupError):
@@ -63,6 +65,15 @@ class State:
     hints: dict[str, int]
     solution: bool
     right: frozenset[str] = frozenset()
+    answered: frozenset[str] = frozenset()  # parts with a readable answer (right or wrong): their evidence is in
+
+    def hint_cost(self, part_id: str) -> float:
+        """What the part's next hint costs, as a share of its credit."""
+        return mastery.next_hint_cost(part_id in self.answered, self.solution, self.hints.get(part_id, 0))
+
+    def solution_cost(self, parts) -> bool:
+        """Whether opening the worked solution now costs anything: some part is still to be answered."""
+        return not self.solution and any(p.id not in self.answered for p in parts)
 
 
 def variant_digest(variant: Variant) -> str:
@@ -177,15 +188,38 @@ class Practice:
     # ---- answering --------------------------------------------------------------------------
 
     def state(self, problem: Problem) -> State:
-        latest, right = {}, set()
+        latest, right, answered = {}, set(), set()
         for check in self.store.checks(problem.id):
             latest[check.part] = check
             if check.status == CORRECT:
                 right.add(check.part)
+            if check.status in (CORRECT, CARRIED, WRONG):
+                answered.add(check.part)
         shown: dict[str, int] = {}
         for hint in self.store.hints(problem.id):
             shown[hint.part] = max(shown.get(hint.part, 0), hint.level)
-        return State(latest, shown, self.store.solution_shown(problem.id), frozenset(right))
+        return State(latest, shown, self.store.solution_shown(problem.id), frozenset(right), frozenset(answered))
+
+    def parts_done(self, problem: Problem) -> dict[str, str]:
+        """How each part went, as mastery counts it: RIGHT_FIRST, AFTER_HINT, WRONG, BLANK (no readable
+        answer) or AFTER_SOLUTION (first answered once the worked solution was shown)."""
+        checks = self.store.checks(problem.id)
+        hinted = {}
+        for hint in self.store.hints(problem.id):
+            hinted.setdefault(hint.part, hint.at)
+        solved = self.store.solution_at(problem.id)
+        done = {}
+        for part in problem.template.parts:
+            first = next((c for c in checks if c.part == part.id and c.status in (CORRECT, CARRIED, WRONG)), None)
+            if first is None:
+                done[part.id] = BLANK
+            elif solved is not None and first.at > solved:
+                done[part.id] = AFTER_SOLUTION
+            elif first.status == WRONG:
+                done[part.id] = WRONG
+            else:
+                done[part.id] = AFTER_HINT if part.id in hinted and hinted[part.id] <= first.at else RIGHT_FIRST
+        return done
 
     def check(self, problem: Problem, part_id: str, text: str) -> PartResult:
         """Mark one part against the variant, with the latest answers to the others for error carried

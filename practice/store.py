@@ -258,7 +258,12 @@ class Store:
                                                 (problem,))]
 
     def solution_shown(self, problem: int) -> bool:
-        return bool(self._read("SELECT 1 FROM solutions WHERE problem = ?", (problem,)))
+        return self.solution_at(problem) is not None
+
+    def solution_at(self, problem: int) -> float | None:
+        """When the problem's worked solution was first shown; None if it was not."""
+        rows = self._read("SELECT at FROM solutions WHERE problem = ?", (problem,))
+        return rows[0][0] if rows else None
 
     def after(self, last: dict[str, int]) -> dict[str, list]:
         """Rows of every table with ids above `last[table]` (0 for all), as (id, row) pairs, in one read."""

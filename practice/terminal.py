@@ -13,24 +13,26 @@ import subprocess
 import sys
 import tempfile
 import textwrap
+from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, TextIO
 
-from graders.results import CARRIED, CORRECT, UNREADABLE, WRONG
+from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG
 
 from exgen.answertypes import answer_type
 from exgen.render.targets import PLAIN
 from exgen.render.text import ask_text, key_lines, line_text, statement_text, WIDTH
-from .mastery import Mastery
+from .mastery import Mastery, costs
 from .progress import Row
 from .scope import Scope, topic_of
-from .session import Practice, Problem
+from .session import AFTER_HINT, AFTER_SOLUTION, RIGHT_FIRST, Practice, Problem
 
 RULE = "─" * WIDTH
 HELP = ("Type your answer with its unit (a bare number is read in the unit asked), or: "
         "h hint · s worked solution · n next problem · q quit")
-AFTER_SOLUTION = "(Parts answered from now on are checked, but count for nothing in your progress.)"
+COSTS = "Help costs credit on the parts it helps with: {hint}; {solution}."
+SOLUTION_SHOWN = "(Parts answered from now on are checked, but count for nothing in your progress.)"
 VERDICTS = {CORRECT: "Right.", CARRIED: "Right, from your earlier answer:", WRONG: "Not right:",
             UNREADABLE: "Cannot read that:"}
 NEXT, QUIT = "next", "quit"
@@ -40,9 +42,7 @@ NEXT, QUIT = "next", "quit"
 class Tally:
     """This sitting's counts, for the summary at the end."""
 
-    problems: int = 0
-    answered: int = 0
-    right_first: int = 0
+    problems: list = field(default_factory=list)  # the problems served
     hints: int = 0
     solutions: int = 0
     topics: dict[str, Mastery] = field(default_factory=dict)  # mastery when the sitting began
@@ -70,6 +70,7 @@ class Terminal:
         self.tally.topics = {k: r.mastery for k, r in self.practice.table("topic").items()}
         self.say(f"Practising {self.practice.catalogue.label(self.scope)}.")
         self.tell(HELP, lead="")
+        self.tell(COSTS.format(**costs()), lead="")
         with tempfile.TemporaryDirectory(prefix="exgen-practice-") as scratch:
             self._figures = self._figures or Path(scratch)
             while self.problem(self.practice.next_problem(self.scope)) != QUIT:
@@ -80,7 +81,7 @@ class Terminal:
     # ---- one problem ------------------------------------------------------------------------
 
     def problem(self, problem: Problem) -> str:
-        self.tally.problems += 1
+        self.tally.problems.append(problem)
         variant = problem.variant
         row = self.practice.table("topic").get(topic_of(problem.template))
         standing = f"  ·  {topic_of(problem.template)}: {_standing(row.mastery if row else Mastery())}"
@@ -120,7 +121,6 @@ class Terminal:
         if part is not problem.template.parts[0]:  # the first follows the list of parts
             self.say()
             self.say(ask_text(problem.variant, part))
-        tried = False
         while True:
             try:
                 text = self.ask(prompt).strip()
@@ -141,15 +141,12 @@ class Terminal:
                 continue
             if command in ("?", "help"):
                 self.tell(HELP)
+                self.tell(COSTS.format(**costs()))
                 continue
             if not text:
                 return "solution" if solved else "skipped"
             result = self.practice.check(problem, part.id, text)
             self.verdict(result)
-            if result.status in (CORRECT, CARRIED, WRONG) and not tried:
-                tried = True
-                self.tally.answered += 1
-                self.tally.right_first += result.correct
             if result.correct:
                 return "solution" if solved else "answered"
             if result.status == WRONG:
@@ -189,7 +186,7 @@ class Terminal:
             self.say(f"  Figure ({name.replace('_', ' ')}): {path}")
             if self.open_figures:
                 open_file(path)
-        self.say(AFTER_SOLUTION)
+        self.say(SOLUTION_SHOWN)
 
     def between(self, problem: Problem, solved: bool) -> str:
         """After the last part: the solution on request, then the next problem or quit."""
@@ -216,9 +213,14 @@ class Terminal:
 
     def summary(self) -> None:
         t = self.tally
+        done = Counter(how for problem in t.problems for how in self.practice.parts_done(problem).values())
+        parts = sum(done.values())
+        after = f", {done[AFTER_SOLUTION]} after the worked solution" if done[AFTER_SOLUTION] else ""
         self.say(RULE)
-        self.say(f"This sitting: {t.problems} problem(s); {t.right_first} of {t.answered} part(s) right at the "
-                 f"first try; {t.hints} hint(s); {t.solutions} worked solution(s) seen.")
+        self.tell(f"This sitting: {len(t.problems)} problem(s), {parts} part(s): {done[RIGHT_FIRST]} right at the "
+                  f"first try, {done[AFTER_HINT]} right after a hint, {done[WRONG]} wrong at the first try, "
+                  f"{done[BLANK]} left blank{after}; {t.hints} hint(s) and {t.solutions} worked solution(s) seen.",
+                  lead="")
         rows = self.practice.table("topic")
         changed = [name for name, row in rows.items() if row.mastery != t.topics.get(name)]
         for name in changed:

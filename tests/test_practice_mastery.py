@@ -161,3 +161,15 @@ def test_the_template_just_practised_is_avoided_when_another_exists():
     rng = random.Random(5)
     assert {choose({"belts": ["belts.a", "belts.b"]}, {}, {}, rng, avoid="belts.a") for _ in range(50)} == {"belts.b"}
     assert choose({"belts": ["belts.a"]}, {}, {}, rng, avoid="belts.a") == "belts.a"
+
+
+def test_the_next_hint_costs_what_problem_evidence_will_charge():
+    from practice.mastery import next_hint_cost
+
+    assert [next_hint_cost(False, False, n) for n in range(5)] == [HINT_COST, HINT_COST, HINT_COST, 0.0, 0.0]
+    assert next_hint_cost(True, False, 0) == next_hint_cost(False, True, 0) == 0.0
+    for shown in range(5):
+        charged = problem_evidence([PartEvents(1.0, None, tuple(float(t) for t in range(shown + 1)))])
+        before = problem_evidence([PartEvents(1.0, None, tuple(float(t) for t in range(shown)))])
+        assert sum(e.weight for e in charged) - sum(e.weight for e in before) == \
+            pytest.approx(next_hint_cost(False, False, shown))

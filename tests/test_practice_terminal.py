@@ -51,9 +51,32 @@ def test_a_sitting_right_wrong_hint_solution_next_quit(monkeypatch, capsys, tmp_
     assert "Hint 1:" in out and "Worked solution" in out and "Answers" in out
     assert "count for nothing in your progress" in out
     assert "Problem 2" in out
-    assert "This sitting: 2 problem(s); 1 of 2 part(s) right at the first try; 1 hint(s); 1 worked solution(s) seen." in out
+    assert ("This sitting: 2 problem(s), 4 part(s): 1 right at the first try, 0 right after a hint, 1 wrong at "
+            "the first try, 2 left blank; 1 hint(s) and 1 worked solution(s) seen.") in " ".join(out.split())
     assert "belts: not started → " in out
     assert "\x1b[" not in out  # no colour, no cursor control
+
+
+@pytest.mark.parametrize("c, counted", [
+    (["h", "{c}"], "1 right at the first try, 1 right after a hint, 0 wrong at the first try, 1 left blank"),
+    (["1 Hz", "h", "{c}"], "1 right at the first try, 0 right after a hint, 1 wrong at the first try, 1 left blank"),
+])
+def test_the_summary_counts_each_part_as_mastery_does(monkeypatch, capsys, tmp_path, bank, seeds, c, counted):
+    """A 3-part problem with (b) blank and (c) right only after a hint was summed up as "2 of 2 part(s)
+    right at the first try; 1 hint(s)"."""
+    variant = make_variant(bank.get("vibration.beam_two_springs"), seeds[0])
+    lines = [variant.answers["a"].text, ""] + [line.format(c=variant.answers["c"].text) for line in c] + ["q"]
+    code, out, err = run(monkeypatch, capsys, lines, "--topic", variant.template.id, db=tmp_path / "p.sqlite3")
+    assert code == 0, err
+    assert f"This sitting: 1 problem(s), 3 part(s): {counted}; 1 hint(s) and 0 worked solution(s) seen." \
+        in " ".join(out.split())
+
+
+def test_what_help_costs_is_said_before_it_is_asked_for(monkeypatch, capsys, tmp_path, seeds):
+    code, out, _ = run(monkeypatch, capsys, ["q"], "--topic", "vibration", db=tmp_path / "p.sqlite3")
+    said = " ".join(out.split())
+    assert "each hint costs a quarter of its part's credit" in said
+    assert said.index("the worked solution costs half") < said.index("Problem 1")
 
 
 def test_the_named_mistake_is_said(monkeypatch, capsys, tmp_path, bank, seeds):
@@ -70,7 +93,7 @@ def test_the_named_mistake_is_said(monkeypatch, capsys, tmp_path, bank, seeds):
 
 def test_end_of_input_ends_the_sitting_with_its_summary(monkeypatch, capsys, tmp_path, seeds):
     code, out, _ = run(monkeypatch, capsys, [], "--chapter", "2", db=tmp_path / "p.sqlite3")
-    assert code == 0 and "This sitting: 1 problem(s); 0 of 0 part(s)" in out
+    assert code == 0 and "This sitting: 1 problem(s)" in out and " 0 right at the first try" in " ".join(out.split())
 
 
 def test_stats_lists_every_chapter_and_topic(monkeypatch, capsys, tmp_path, seeds, bank):

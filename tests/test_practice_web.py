@@ -1,5 +1,6 @@
 """The practice web app over HTTP: pages, checks without a reload, and hostile requests (oversized or
 malformed bodies, other sites, other host names, paths outside the assets, a script in an answer)."""
+import html
 import random
 import re
 import socket
@@ -308,3 +309,20 @@ def test_every_figure_shown_has_the_level_the_progress_page_states_for_it(practi
         assert len(found) >= len(rows) == len(means)
         assert all(level(int(percent)) == said for percent, said in found), found
     assert ("79", "learning") in table and ("80", "mastered") in table and ("49", "weak") in table
+
+
+def test_what_help_costs_is_on_the_page_before_it_is_asked_for_and_follows_the_answers(client, practice):
+    problem_id = new_problem(client, "template:vibration.beam_two_springs")
+    page = " ".join(html.unescape(client.get(f"/problem/{problem_id}").text).split())
+    assert "each hint costs a quarter of its part's credit" in page
+    assert 'data-cost="a">costs a quarter of (a)\'s credit</span>' in page
+    assert "costs half of the credit of every part not answered yet" in page
+    variant = practice.problem(problem_id).variant
+    checked = client.post(f"/problem/{problem_id}/check", data={"part": "a", "answer": variant.answers["a"].text},
+                          headers=JSON).json()
+    assert checked["costs"]["a"] == "free: (a) has been answered" and checked["costs"]["b"].startswith("costs a quarter")
+    hinted = client.post(f"/problem/{problem_id}/hint", data={"part": "b"}, headers=JSON).json()
+    assert hinted["costs"]["b"].startswith("costs a quarter") and hinted["costs"]["a"].startswith("free")
+    for part in ("b", "c"):
+        client.post(f"/problem/{problem_id}/check", data={"part": part, "answer": "1"}, headers=JSON)
+    assert "free: every part has been answered" in client.get(f"/problem/{problem_id}").text

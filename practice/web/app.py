@@ -173,7 +173,8 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
         html = pages.fragment("parts.html", "feedback", None, pages.feedback(result.status, result.message)
                               if result.status != "blank" else None)
         return JSONResponse({"html": html, "status": result.status, "correct": result.correct,
-                             "standing": _standing_text(problem, standing)})
+                             "standing": _standing_text(problem, standing),
+                             "costs": pages.costs_now(problem, practice.state(problem))})
 
     def hint(request, form):
         problem = problem_of(request)
@@ -181,8 +182,10 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
         practice.next_hint(problem, part_id)
         if not wants_json(request):
             return RedirectResponse(f"/problem/{problem.id}#part-{part_id}", status_code=303)
-        part = pages.part_context(practice, problem, problem.template.part(part_id), practice.state(problem), asked=True)
-        return JSONResponse({"html": pages.fragment("parts.html", "hints", part), "more": part["more_hints"]})
+        state = practice.state(problem)
+        part = pages.part_context(practice, problem, problem.template.part(part_id), state, asked=True)
+        return JSONResponse({"html": pages.fragment("parts.html", "hints", part), "more": part["more_hints"],
+                             "costs": pages.costs_now(problem, state)})
 
     def solution(request, form):
         problem = problem_of(request)
@@ -190,7 +193,8 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
         if not wants_json(request):
             return RedirectResponse(f"/problem/{problem.id}#solution", status_code=303)
         return JSONResponse({"html": pages.fragment("parts.html", "solution",
-                                                    pages.solution_context(practice, problem))})
+                                                    pages.solution_context(practice, problem)),
+                             "costs": pages.costs_now(problem, practice.state(problem))})
 
     async def static(request: Request) -> Response:
         asset = assets.get(request.path_params["name"])

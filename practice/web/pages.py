@@ -16,7 +16,7 @@ from exgen.echo import shown
 from exgen.figures import Drawn
 from exgen.render.context import figure_caption, key_context, line_context
 from exgen.render.html import HTML
-from ..mastery import MASTERED, WEAK, Mastery, costs
+from ..mastery import MASTERED, SOLUTION_COST, WEAK, Mastery, costs, share_words
 from ..progress import Row
 from ..scope import Scope, topic_of
 from ..session import Practice, Problem, State
@@ -85,6 +85,7 @@ def problem_page(practice: Practice, problem: Problem) -> str:
     row = practice.table("topic").get(topic)
     parts = [part_context(practice, problem, part, state) for part in problem.template.parts]
     return render("problem.html", problem=problem_context(practice, problem), parts=parts,
+                  solution_cost=solution_cost_text(problem, state),
                   statement=HTML.text(variant.statement), figure=_figure(practice, problem),
                   standing=standing(row.mastery if row else Mastery()), topic=topic_name(topic),
                   solution=solution_context(practice, problem) if state.solution else None)
@@ -118,7 +119,30 @@ def part_context(practice: Practice, problem: Problem, part, state: State, asked
         "feedback": feedback(check.status, check.message) if check else None,
         "hints": [hint_context(i + 1, h) for i, h in enumerate(ladder[:hinted])],
         "more_hints": hinted < len(ladder) if known else True, "problem": problem.id,
+        "cost": hint_cost_text(part.id, state),
     }
+
+
+def hint_cost_text(part_id: str, state: State) -> str:
+    """What the part's next hint costs, said beside its button before it is pressed."""
+    cost = state.hint_cost(part_id)
+    if cost:
+        return f"costs {share_words(cost)} of ({part_id})'s credit"
+    if part_id in state.answered:
+        return f"free: ({part_id}) has been answered"
+    return "free: the worked solution is shown" if state.solution else "free: its hints have cost all they can"
+
+
+def solution_cost_text(problem: Problem, state: State) -> str:
+    if state.solution_cost(problem.template.parts):
+        return f"costs {share_words(SOLUTION_COST)} of the credit of every part not answered yet"
+    return "free: every part has been answered" if not state.solution else "shown below"
+
+
+def costs_now(problem: Problem, state: State) -> dict[str, str]:
+    """Every cost the page shows, as it stands (sent with each check, hint and solution)."""
+    return {**{p.id: hint_cost_text(p.id, state) for p in problem.template.parts},
+            "solution": solution_cost_text(problem, state)}
 
 
 #: A message on a page: long enough for every message exgen writes; what a student typed in it is short.

@@ -19,6 +19,11 @@ document.addEventListener("submit", async (event) => {
     if (!response.ok) throw new Error(data.error || response.statusText);
     target.innerHTML = data.html;
     if (data.standing) document.getElementById("standing").textContent = data.standing;
+    for (const [name, text] of Object.entries(data.costs || {})) {  // what help costs now
+      for (const cost of document.querySelectorAll(".cost")) {
+        if (cost.dataset.cost === name) cost.textContent = text;
+      }
+    }
     if (form.classList.contains("hint-form")) {
       if (button) button.disabled = !data.more;
       const hints = target.querySelectorAll(".hint");
