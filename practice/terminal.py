@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import os
 import shlex
+import shutil
 import subprocess
 import sys
-import tempfile
 import textwrap
 from collections import Counter
 from dataclasses import dataclass, field
@@ -32,6 +32,9 @@ RULE = "─" * WIDTH
 HELP = ("Type your answer with its unit (a bare number is read in the unit asked), or: "
         "h hint · s worked solution · n next problem · q quit")
 COSTS = "Help costs credit on the parts it helps with: {hint}; {solution}."
+FIGURE_GIVEN = "The figure is the problem's data; open it to answer"
+OPEN_SUGGESTED = "(Figures are kept beside your progress file; `exgen practice --open` opens each in your viewer.)"
+FIGURE_UNWRITTEN = "The figure could not be written to {path} ({reason}); the web pages (`exgen serve`) show it."
 SOLUTION_SHOWN = "(Parts answered from now on are checked, but count for nothing in your progress.)"
 VERDICTS = {CORRECT: "Right.", CARRIED: "Right, from your earlier answer:", WRONG: "Not right:",
             UNREADABLE: "Cannot read that:"}
@@ -56,6 +59,7 @@ class Terminal:
         self.ask = ask or _ask
         self.open_figures = open_figures
         self._figures = figures
+        self._suggested = False  # --open suggested once a sitting
         self.tally = Tally()
 
     def say(self, text: str = "") -> None:
@@ -71,10 +75,9 @@ class Terminal:
         self.say(f"Practising {self.practice.catalogue.label(self.scope)}.")
         self.tell(HELP, lead="")
         self.tell(COSTS.format(**costs()), lead="")
-        with tempfile.TemporaryDirectory(prefix="exgen-practice-") as scratch:
-            self._figures = self._figures or Path(scratch)
-            while self.problem(self.practice.next_problem(self.scope)) != QUIT:
-                pass
+        self._figures = self._figures or figures_folder(self.practice.store.path)
+        while self.problem(self.practice.next_problem(self.scope)) != QUIT:
+            pass
         self.summary()
         return 0
 
@@ -104,15 +107,29 @@ class Terminal:
 
     def show_figures(self, problem: Problem) -> None:
         svg = self.practice.figure(problem)
-        if svg:
-            path = self._write(f"problem-{problem.id}.svg", svg)
-            self.say(f"\nFigure: {path}")
-            if self.open_figures:
-                open_file(path)
+        if not svg:
+            return
+        path = self._write(f"problem-{problem.id}.svg", svg)
+        if path is None:
+            return
+        given = any(not spec.given for spec in problem.template.params)  # what it draws is not in the text
+        self.say()
+        self.say(f"{FIGURE_GIVEN if given else 'Figure'}: {path}")  # a path is never wrapped
+        if self.open_figures:
+            open_file(path)
+        elif not self._suggested and can_open():
+            self._suggested = True
+            self.tell(OPEN_SUGGESTED, lead="")
 
-    def _write(self, name: str, svg: str) -> Path:
+    def _write(self, name: str, svg: str) -> Path | None:
+        """The figure written beside the progress file, kept after the sitting; None (said) if it cannot be."""
         path = self._figures / name
-        path.write_text(svg, encoding="utf-8")
+        try:
+            self._figures.mkdir(parents=True, exist_ok=True)
+            path.write_text(svg, encoding="utf-8")
+        except OSError as exc:
+            self.tell(FIGURE_UNWRITTEN.format(path=path, reason=exc.strerror or exc), lead="")
+            return None
         return path
 
     def part(self, problem: Problem, part, solved: bool) -> str:
@@ -183,6 +200,8 @@ class Terminal:
             self.say(line)
         for name, svg in self.practice.key_figures(problem):
             path = self._write(f"problem-{problem.id}-{name}.svg", svg)
+            if path is None:
+                continue
             self.say(f"  Figure ({name.replace('_', ' ')}): {path}")
             if self.open_figures:
                 open_file(path)
@@ -269,6 +288,17 @@ def stats_text(practice: Practice) -> str:
 def _duration(seconds: float) -> str:
     minutes = round(seconds / 60)
     return f"{minutes // 60}h{minutes % 60:02d}" if minutes >= 60 else f"{minutes} min"
+
+
+def figures_folder(progress: Path) -> Path:
+    """Where the terminal keeps figures: beside the progress file, named after it (practice-figures/)."""
+    progress = Path(progress)
+    return progress.with_name(f"{progress.stem}-figures")
+
+
+def can_open() -> bool:
+    """Whether this system has a viewer `open_file` can start."""
+    return sys.platform in ("win32", "darwin") or shutil.which("xdg-open") is not None
 
 
 def open_file(path: Path) -> None:

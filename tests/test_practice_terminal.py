@@ -2,6 +2,7 @@
 in one line."""
 import io
 import itertools
+import re
 import math
 import os
 import subprocess
@@ -174,3 +175,26 @@ def test_feedback_fits_the_page_and_the_summary_names_the_progress_file_given(mo
     assert any("Not right" in line for line in feedback) and all(len(line) <= WIDTH for line in feedback)
     assert "that was not read as an answer" in out
     assert f"`exgen practice --stats --db '{db}'` shows all of it" in out
+
+
+def test_a_figure_that_is_the_given_stays_beside_the_progress_file_after_the_sitting(monkeypatch, capsys, tmp_path,
+                                                                                      seeds):
+    """For linkages.mobility the figure is the problem; the terminal printed a temporary path deleted on quit."""
+    from practice import terminal
+
+    monkeypatch.setattr(terminal, "can_open", lambda: True)
+    db = tmp_path / "mine.sqlite3"
+    code, out, err = run(monkeypatch, capsys, ["q"], "--topic", "linkages.mobility", db=db)
+    assert code == 0, err
+    shown = re.search(r"The figure is the problem's data; open it to answer: (\S+\.svg)", out)
+    assert shown, out
+    path = Path(shown.group(1))
+    assert path.parent == tmp_path / "mine-figures" and path.is_file() and path.read_text().startswith("<svg")
+    assert "`exgen practice --open` opens each in your viewer" in " ".join(out.split())
+
+
+def test_a_figure_that_cannot_be_written_is_one_line_and_the_sitting_goes_on(monkeypatch, capsys, tmp_path, seeds):
+    blocker = tmp_path / "p-figures"
+    blocker.write_text("a file where the folder would go")
+    code, out, err = run(monkeypatch, capsys, ["q"], "--topic", "linkages.mobility", db=tmp_path / "p.sqlite3")
+    assert code == 0 and "The figure could not be written to" in out and "Traceback" not in out + err
