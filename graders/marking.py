@@ -19,6 +19,7 @@ from exgen.template import PartSpec
 from exgen.variant import Answer, answer_for, mistakes_for, rerun
 
 from .mistakes import generic_mistake, template_mistake
+from .why_not import why_not
 from .results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult, QuestionResult
 
 NO_ANSWER = "no answer given"
@@ -87,7 +88,8 @@ class QuestionMarker:
         mistake = template_mistake(part, given.value, recorded, matches) or generic_mistake(part, given, answer.value)
         if mistake is not None:
             return result.make(WRONG, mistake.message, mistake.name)
-        return result.make(WRONG, kind.wrong_message(given, part))
+        why = why_not(self.variant, part, given)
+        return result.make(WRONG, kind.wrong_message(given, part) + (f". {why}" if why else ""))
 
     def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | _NotCarried | None:
         """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong;

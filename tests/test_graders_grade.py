@@ -258,7 +258,7 @@ def test_wrong_answers_are_named(bank, part_id, typed, mistake):
     part = next(p for p in grade_variant(variant, {part_id: text}).parts if p.part_id == part_id)
     assert part.status == WRONG and part.mistake == mistake, part.message
     if mistake is None:
-        assert part.message == "not within 1 % of the expected value"
+        assert part.message == "not within 1 % of the expected value. Your value is about 50 % too large."
 
 
 def test_mistake_value_from_the_carried_forward_derivation(bank):
