@@ -216,19 +216,87 @@ def test_the_same_with_the_keyboard_alone(page, server):
     first = page.url
     page.keyboard.press("Enter")
     page.wait_for_url(lambda u: u != first and "/problem/" in u)
+    # the new problem's first box has the focus: after "Another one" it took six Tabs to reach (a)
+    wait_focus(page, f"answer-{key(server, page).template.parts[0].id}")
+    page.keyboard.type("1")
+    assert page.evaluate("document.activeElement.value") == "1"
 
 
-def test_a_phone_width_screen_needs_no_sideways_scrolling(browser, server):
+SCROLLERS = ".figure, .math-line, .table-wrap, .chart-figure, .hint"
+
+
+def sideways(page) -> list[dict]:
+    """Every box that can scroll sideways: how far, and how much of each edge fades (the sign it scrolls)."""
+    return page.evaluate("""(selector) => [...document.querySelectorAll(selector)].map(e => {
+        const style = getComputedStyle(e);
+        return {what: e.className + ' ' + (e.id || ''), over: e.scrollWidth - e.clientWidth,
+                left: parseFloat(style.getPropertyValue('--more-left')) || 0,
+                right: parseFloat(style.getPropertyValue('--more-right')) || 0, mask: style.maskImage};
+    })""", SCROLLERS)
+
+
+def scroll_all(page, where: str) -> None:
+    page.evaluate("""([selector, where]) => document.querySelectorAll(selector).forEach(
+        e => e.scrollLeft = where === 'end' ? e.scrollWidth : 0)""", [SCROLLERS, where])
+    page.wait_for_timeout(150)  # the scroll timeline updates at the next frames
+
+
+def small_text(page) -> list[str]:
+    """Text drawn smaller than 0.8 of the body's: HTML text by its computed size, an SVG's labels by their size
+    times the figure's scale on screen. Subscripts, superscripts and math are not labels."""
+    return page.evaluate("""() => {
+        const body = parseFloat(getComputedStyle(document.body).fontSize), out = [];
+        const walker = document.createTreeWalker(document.querySelector('main'), NodeFilter.SHOW_TEXT);
+        for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+            const e = node.parentElement;
+            if (!node.textContent.trim() || e.closest('math, sub, sup, tspan, title, desc, .skip')) continue;
+            let size = parseFloat(getComputedStyle(e).fontSize);
+            const svg = e.closest('svg');
+            if (svg) size *= svg.getScreenCTM().a;
+            const box = e.getBoundingClientRect();
+            if (box.width === 0 && box.height === 0) continue;  // not shown (a closed <details>)
+            if (size < 0.8 * body - 0.01) out.push(`${node.textContent.trim().slice(0, 30)}: ${size.toFixed(1)}px`);
+        }
+        return out;
+    }""")
+
+
+@pytest.mark.parametrize("width", [390, 1280])
+def test_at_phone_and_desktop_width_labels_read_and_what_scrolls_shows_it(browser, server, width):
+    """At 390 px worked lines and the progress table were cut with no sign that they scroll, and chart and
+    figure labels shrank to about 6 px."""
     url, _ = server
-    context = browser.new_context(viewport={"width": 375, "height": 740}, is_mobile=True, has_touch=True)
+    context = browser.new_context(viewport={"width": width, "height": 800}, is_mobile=width < 500, has_touch=width < 500)
     page = context.new_page()
     page.goto(url + "/")
     page.get_by_role("button", name="Practise Balancing").click()
     page.wait_for_url("**/problem/*")
+    problem = key(server, page)
+    for part in problem.template.parts:
+        page.locator(f"#part-{part.id}").get_by_role("button", name=f"Hint for ({part.id})").click()
+        page.locator(f"#hints-{part.id} .hint").first.wait_for()
     page.get_by_role("button", name="Show the worked solution").click()
     page.locator("#solution-heading").wait_for()
-    width = page.evaluate("document.documentElement.scrollWidth")
-    assert width <= 376, f"the page is {width}px wide on a 375px screen"
+    page.evaluate("document.fonts.ready.then(() => true)")
+    for where in ("/problem", "/progress"):
+        if where == "/progress":
+            page.goto(url + "/progress")
+        width_now = page.evaluate("document.documentElement.scrollWidth")
+        assert width_now <= width + 1, f"the page is {width_now}px wide on a {width}px screen"
+        boxes = sideways(page)
+        assert page.locator("figure svg").count() >= 1
+        for box in boxes:
+            if box["over"] > 1:   # it scrolls: at the start its right edge fades, the left does not
+                assert box["right"] > 0 and box["left"] == 0 and box["mask"] != "none", box
+            else:
+                assert box["right"] == box["left"] == 0, box
+        scroll_all(page, "end")
+        for box in sideways(page):
+            if box["over"] > 1:   # at the end, the other way round
+                assert box["left"] > 0 and box["right"] == 0, box
+        if width < 500 and where == "/problem":
+            assert any(b["over"] > 1 for b in boxes), "nothing scrolls on a phone: the test shows nothing"
+        assert small_text(page) == []
     context.close()
 
 

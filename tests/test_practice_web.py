@@ -321,8 +321,10 @@ def test_what_help_costs_is_on_the_page_before_it_is_asked_for_and_follows_the_a
     checked = client.post(f"/problem/{problem_id}/check", data={"part": "a", "answer": variant.answers["a"].text},
                           headers=JSON).json()
     assert checked["costs"]["a"] == "free: (a) has been answered" and checked["costs"]["b"].startswith("costs a quarter")
-    hinted = client.post(f"/problem/{problem_id}/hint", data={"part": "b"}, headers=JSON).json()
-    assert hinted["costs"]["b"].startswith("costs a quarter") and hinted["costs"]["a"].startswith("free")
+    hinted = client.post(f"/problem/{problem_id}/hint", data={"part": "c"}, headers=JSON).json()
+    assert hinted["more"] and hinted["costs"]["c"].startswith("costs a quarter") and hinted["costs"]["a"].startswith("free")
+    last = client.post(f"/problem/{problem_id}/hint", data={"part": "c"}, headers=JSON).json()
+    assert not last["more"] and last["costs"]["c"] == ""  # no hint left to cost anything
     for part in ("b", "c"):
         client.post(f"/problem/{problem_id}/check", data={"part": part, "answer": "1"}, headers=JSON)
     assert "free: every part has been answered" in client.get(f"/problem/{problem_id}").text

@@ -174,7 +174,7 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
                               if result.status != "blank" else None)
         return JSONResponse({"html": html, "status": result.status, "correct": result.correct,
                              "standing": _standing_text(problem, standing),
-                             "costs": pages.costs_now(problem, practice.state(problem))})
+                             "costs": pages.costs_now(practice, problem, practice.state(problem))})
 
     def hint(request, form):
         problem = problem_of(request)
@@ -185,7 +185,7 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
         state = practice.state(problem)
         part = pages.part_context(practice, problem, problem.template.part(part_id), state, asked=True)
         return JSONResponse({"html": pages.fragment("parts.html", "hints", part), "more": part["more_hints"],
-                             "costs": pages.costs_now(problem, state)})
+                             "costs": pages.costs_now(practice, problem, state)})
 
     def solution(request, form):
         problem = problem_of(request)
@@ -194,7 +194,7 @@ def create_app(practice: Practice, allowed_hosts: tuple[str, ...] | None = None)
             return RedirectResponse(f"/problem/{problem.id}#solution", status_code=303)
         return JSONResponse({"html": pages.fragment("parts.html", "solution",
                                                     pages.solution_context(practice, problem)),
-                             "costs": pages.costs_now(problem, practice.state(problem))})
+                             "costs": pages.costs_now(practice, problem, practice.state(problem))})
 
     async def static(request: Request) -> Response:
         asset = assets.get(request.path_params["name"])

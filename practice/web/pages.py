@@ -21,6 +21,7 @@ from ..progress import Row
 from ..scope import Scope, topic_of
 from ..session import Practice, Problem, State
 from .chart import mastery_chart
+from .legible import legible
 
 @lru_cache(maxsize=1)
 def environment() -> jinja2.Environment:
@@ -84,8 +85,9 @@ def problem_page(practice: Practice, problem: Problem) -> str:
     topic = topic_of(problem.template)
     row = practice.table("topic").get(topic)
     parts = [part_context(practice, problem, part, state) for part in problem.template.parts]
+    fresh = not (state.checks or state.hints or state.solution)  # just served: the first box takes the focus
     return render("problem.html", problem=problem_context(practice, problem), parts=parts,
-                  solution_cost=solution_cost_text(problem, state),
+                  solution_cost=solution_cost_text(problem, state), fresh=fresh,
                   statement=HTML.text(variant.statement), figure=_figure(practice, problem),
                   standing=standing(row.mastery if row else Mastery()), topic=topic_name(topic),
                   solution=solution_context(practice, problem) if state.solution else None)
@@ -102,7 +104,7 @@ def _figure(practice: Practice, problem: Problem) -> dict | None:
     svg = practice.figure(problem)
     if not svg:
         return None
-    return {"svg": Markup(svg), "caption": figure_caption(1, svg).partition(": ")[2] or "Figure"}
+    return {"svg": Markup(legible(svg)), "caption": figure_caption(1, svg).partition(": ")[2] or "Figure"}
 
 
 def part_context(practice: Practice, problem: Problem, part, state: State, asked: bool = False) -> dict:
@@ -119,12 +121,15 @@ def part_context(practice: Practice, problem: Problem, part, state: State, asked
         "feedback": feedback(check.status, check.message) if check else None,
         "hints": [hint_context(i + 1, h) for i, h in enumerate(ladder[:hinted])],
         "more_hints": hinted < len(ladder) if known else True, "problem": problem.id,
-        "cost": hint_cost_text(part.id, state),
+        "cost": hint_cost_text(part.id, state, hinted < len(ladder) if known else True),
     }
 
 
-def hint_cost_text(part_id: str, state: State) -> str:
-    """What the part's next hint costs, said beside its button before it is pressed."""
+def hint_cost_text(part_id: str, state: State, more: bool = True) -> str:
+    """What the part's next hint costs, said beside its button before it is pressed (nothing once there
+    is no next hint)."""
+    if not more:
+        return ""
     cost = state.hint_cost(part_id)
     if cost:
         return f"costs {share_words(cost)} of ({part_id})'s credit"
@@ -139,9 +144,13 @@ def solution_cost_text(problem: Problem, state: State) -> str:
     return "free: every part has been answered" if not state.solution else "shown below"
 
 
-def costs_now(problem: Problem, state: State) -> dict[str, str]:
+def costs_now(practice: Practice, problem: Problem, state: State) -> dict[str, str]:
     """Every cost the page shows, as it stands (sent with each check, hint and solution)."""
-    return {**{p.id: hint_cost_text(p.id, state) for p in problem.template.parts},
+    def more(part_id: str) -> bool:
+        shown = state.hints.get(part_id, 0)
+        return not shown or shown < len(practice.hints(problem, part_id, state))
+
+    return {**{p.id: hint_cost_text(p.id, state, more(p.id)) for p in problem.template.parts},
             "solution": solution_cost_text(problem, state)}
 
 
@@ -163,7 +172,7 @@ def hint_context(level: int, hint) -> dict:
 
 
 def solution_context(practice: Practice, problem: Problem) -> dict:
-    figures = [(Markup(svg), Drawn(name, svg).title or name.replace("_", " "))
+    figures = [(Markup(legible(svg)), Drawn(name, svg).title or name.replace("_", " "))
                for name, svg in practice.key_figures(problem)]
     context = key_context(problem.variant, HTML, figures, practice.worked(problem))
     context["answers"] = [{"id": p.id, "text": answer_type(p).key_text(problem.variant.answers[p.id], HTML)}
