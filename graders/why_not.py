@@ -71,7 +71,7 @@ def _matching_step(variant, part, given) -> str | None:
     answer = variant.answers[part.id].step.name
     best = None
     for candidate in _candidates(variant):
-        if candidate.name == answer or abs(candidate.value) <= SMALL:
+        if candidate.name == answer:
             continue
         gap = _gap(part, number, candidate, rel)
         if gap is not None and gap <= rel and (best is None or gap < best[0]):
@@ -110,9 +110,11 @@ def _factors(unit: str) -> tuple[float, ...]:
 
 
 def _candidates(variant) -> list[_Candidate]:
-    out = [_Candidate(s.name, float(s.value), s.unit or "", False) for s in variant.steps if _number(s.value)]
+    """The steps and givens a number can be, leaving out those too near 0 to tell apart."""
+    out = [_Candidate(s.name, float(s.value), s.unit or "", False) for s in variant.steps
+           if _number(s.value) and abs(s.value) > SMALL]
     for p in variant.params:
-        if _number(p.si) and p.unit is not None:
+        if _number(p.si) and p.unit is not None and abs(p.si) > SMALL:
             out.append(_Candidate(p.name, units.from_si(float(p.si), p.unit) if p.unit else float(p.si),
                                   p.unit or "", True))
     return out
@@ -129,7 +131,7 @@ def _say(variant, part, candidate: _Candidate) -> str:
     distance = _distance(variant, target, candidate.name)
     if distance is not None:
         more = "" if distance == 1 else f", {distance - 1} more step{'s' if distance > 2 else ''} on"
-        return ON_THE_WAY.format(step=step, target=PLAIN.math(variant.step(target).symbol), more=more)
+        return ON_THE_WAY.format(step=step, target=_plain(variant.step(target).symbol), more=more)
     if _distance(variant, candidate.name, target) is not None:
         return LATER.format(step=step)
     return UNUSED.format(step=step)
@@ -141,16 +143,26 @@ def _named(variant, name: str) -> str:
     found = next((s for s in variant.steps if s.name == name), None)
     if found is None:
         param = variant.param(name)
-        return PLAIN.math(param.symbol) + (f" ({PLAIN.text(param.label)})" if param.label else "")
-    symbol = PLAIN.math(found.symbol)
+        return _plain(param.symbol) + (f" ({PLAIN.text(param.label)})" if param.label else "")
     if not found.formula or not PLACEHOLDER.search(found.formula):
-        return symbol
-    fills = tuple(symbols[n] for n in _slots(found.formula))
-    return f"{symbol} = {PLAIN.math(written(found.formula, fills))}"
+        return _plain(found.symbol)
+    return _with_formula(found.symbol, found.formula, tuple(symbols[n] for n in _slots(found.formula)))
 
 
-def _slots(latex: str) -> list[str]:
-    return [slot.name for slot in parse(latex).slots]
+@lru_cache(maxsize=4096)
+def _with_formula(symbol: str, formula: str, fills: tuple[str, ...]) -> str:
+    """Written once per template's step: every variant of a template names its steps alike."""
+    return f"{_plain(symbol)} = {_plain(written(formula, fills))}"
+
+
+@lru_cache(maxsize=4096)
+def _plain(latex: str) -> str:
+    return PLAIN.math(latex)
+
+
+@lru_cache(maxsize=4096)
+def _slots(latex: str) -> tuple[str, ...]:
+    return tuple(slot.name for slot in parse(latex).slots)
 
 
 def _distance(variant, later: str, earlier: str) -> int | None:
@@ -170,11 +182,12 @@ def _factor(part, value: float, key: float) -> str | None:
     if key == 0 or value == 0 or part.type in ("integer", "angle"):
         return None
     rel = max(part.tol.rel or REL_TOL, REL_TOL)
-    ratio = value / key
+    ratio = abs(value / key)
     for factor, why in FACTORS:
-        for times, shown in ((factor, _times(factor)), (1 / factor, _fraction(factor))):
-            if abs(abs(ratio) / times - 1) <= rel:
-                return FACTOR.format(times=shown, why=why)
+        if abs(ratio / factor - 1) <= rel:
+            return FACTOR.format(times=_times(factor), why=why)
+        if abs(ratio * factor - 1) <= rel:
+            return FACTOR.format(times=_fraction(factor), why=why)
     if abs(key) > 0 and not 0.5 < abs(key) < 2:  # a square and a root are close to the value itself near 1
         if abs(abs(value) / key ** 2 - 1) <= 2 * rel:
             return FACTOR.format(times="about the square of", why="if a square root were left out")

@@ -46,6 +46,8 @@ class Withheld:
 
     def in_text(self, text: str) -> bool:
         """Whether a number written in a text gives an answer away."""
+        if not any(c.isdigit() for c in text):
+            return False
         return any(self.gives_away(n) for n in numbers_in(PLAIN.text(text)))
 
 
@@ -68,9 +70,14 @@ def hint_ladder(variant, part_id: str, worked=None, answered: frozenset[str] = f
     needed = _worked_from(variant.steps, lines[end].name)
     chosen = [(line, True) for line in lines[start:end] if not needed or line.name in needed] + [(lines[end], False)]
     # which lines make the ladder does not depend on what is answered, so a hint keeps its number
-    everything, withheld = Withheld(variant), Withheld(variant, answered)
-    return tuple(Hint(line=shown(line, withheld, result)) for line, result in chosen
-                 if shown(line, everything, result) is not None)
+    everything = Withheld(variant)
+    withheld = Withheld(variant, answered) if answered else everything
+    ladder = []
+    for line, result in chosen:
+        hidden = shown(line, everything, result)
+        if hidden is not None:
+            ladder.append(Hint(line=hidden if withheld is everything else shown(line, withheld, result)))
+    return tuple(ladder)
 
 
 def shown(line: WorkLine, withheld: Withheld, result: bool = True) -> WorkLine | None:
