@@ -313,14 +313,16 @@ COMMON_UNITS = ("N", "kN", "MN", "N*m", "kN*m", "Nm", "W", "kW", "MW", "J", "kJ"
 def bank_units(bank) -> set[str]:
     """Every unit a bank's templates write: parameters, parts, reported quantities, and the steps and
     table columns of a variant of each (the units their worked solutions are in)."""
+    from .answertypes.quantity import unit_families
     from .variant import make_variant
 
     found = set(COMMON_UNITS) | set(SI_UNITS.values())
+    found |= {unit for family in unit_families() for unit in family}  # a value is read in any of its kind
     for template in bank:
         found |= {p.unit for p in template.params} | {p.unit for p in template.parts}
         found |= {r.unit for r in template.report}
         variant = make_variant(template, 1)
-        found |= {s.unit for s in variant.steps if isinstance(s.unit, str)}
+        found |= {u for s in variant.steps for u in (s.unit, s.shown) if isinstance(u, str)}  # worked in, shown in
         found |= {c.unit for table in variant.inserts for c in getattr(table, "columns", ())}
     return found
 

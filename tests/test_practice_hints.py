@@ -243,3 +243,27 @@ def test_in_the_terminal_every_hint_asked_first_shows_no_answer(bank, tmp_path, 
     omega = f"{variant.step('omega_n').value:.4g}"
     assert grade_variant(variant, {"c": f"{omega} rad/s"}).parts[2].status == CORRECT  # ωₙ is (c) in rad/s ...
     assert omega not in out  # ... so no hint shows it
+
+
+def test_hints_and_why_not_feedback_never_load_pint():
+    """Reading a value in every unit of its kind goes through the stored unit table: building pint's
+    registry took a second in the middle of a student's check."""
+    import subprocess
+    import sys
+
+    script = """
+import sys
+from exgen.bank import load_bank
+from exgen.variant import make_variant
+from graders.grade import grade_variant
+from practice.hints import hint_ladder
+for template in load_bank():
+    variant = make_variant(template, 5)
+    for part in template.parts:
+        hint_ladder(variant, part.id)
+    grade_variant(variant, {p.id: "123.4" for p in template.parts})
+print("pint" in sys.modules)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "False"

@@ -139,18 +139,15 @@ def accepted_units(unit: str) -> tuple[tuple[str, float], ...]:
 
 @lru_cache(maxsize=256)
 def units_of_kind(unit: str) -> tuple[str, ...]:
-    """Every unit a value of `unit`'s kind may be written in, `unit` first: the stored units and the
-    families of the same dimension. An angular speed's kind holds rad/s, rpm and Hz together (a student
-    converts between them), a pure number's holds %, an angle's deg and rad."""
+    """Every unit a value of `unit`'s kind may be written in, `unit` first: the stored units (those the
+    bank writes, the families of unit_families.txt, what students commonly type) of the same dimension,
+    so pint is never asked. An angular speed's kind holds rad/s, rpm and Hz together (a student converts
+    between them), a pure number's holds %, an angle's deg and rad."""
     try:
         units.unit_info(unit)
     except QuantityError:
         return (unit,)
-    found = [unit]
-    for other in (*units.known_units(), *(u for family in unit_families() for u in family)):
-        if other not in found and units.same_dimension(other, unit):
-            found.append(other)
-    return tuple(found)
+    return (unit, *(other for other in units.known_units() if other != unit and units.same_dimension(other, unit)))
 
 
 def family_of(unit: str) -> tuple[str, ...]:
