@@ -116,12 +116,18 @@ def level(percent: int) -> str:
 
 def mastery(problems: Sequence[Sequence[Evidence]]) -> Mastery:
     """The estimate from a topic's (or template's) problems, oldest first, each its evidence in order."""
-    rating, counted = 0.0, 0
+    estimate = Mastery()
     for evidence in problems:
-        counted += bool(evidence)
-        for e in evidence:
-            rating += K * e.weight * (e.right - expected(rating))
-    return Mastery(rating, counted)
+        estimate = after(estimate, evidence)
+    return estimate
+
+
+def after(estimate: Mastery, evidence: Sequence[Evidence]) -> Mastery:
+    """The estimate once one more problem's evidence is in."""
+    rating = estimate.rating
+    for e in evidence:
+        rating += K * e.weight * (e.right - expected(rating))
+    return Mastery(rating, estimate.problems + bool(evidence))
 
 
 def next_hint_cost(answered: bool, solution: bool, hints: int) -> float:

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 from graders.results import CARRIED, CORRECT, WRONG
 
-from .mastery import Evidence, PartEvents, mastery, problem_evidence
+from .mastery import Evidence, Mastery, PartEvents, after, problem_evidence
 from .store import Store
 
 READABLE = (CORRECT, CARRIED, WRONG)  # a blank or unreadable answer is not evidence
@@ -51,6 +51,8 @@ class Progress:
         self._last: dict[str, int] = {}
         self._problems: dict[int, _Problem] = {}
         self._evidence: dict[int, tuple[Evidence, ...]] = {}   # kept until the problem's rows change
+        self._changes: dict[int, int] = {}                     # problem -> how often its rows changed
+        self._folds: dict[tuple[str, str], list[tuple[int, int, Mastery]]] = {}  # group -> (problem, change, after)
         self._tables: dict[str, dict[str, Row]] = {}     # kept until any row is added
         self._lock = threading.Lock()
 
@@ -62,7 +64,9 @@ class Progress:
                     self._last[table] = rows[-1][0]
                     self._tables.clear()
                     for _, row in rows:
-                        self._evidence.pop(getattr(row, "problem", None) or row.id, None)
+                        changed = getattr(row, "problem", None) or row.id
+                        self._evidence.pop(changed, None)
+                        self._changes[changed] = self._changes.get(changed, 0) + 1
             for problem_id, row in new["problems"]:
                 self._problems[problem_id] = _Problem(row.template, row.topic, row.chapter)
             for _, check in new["checks"]:
@@ -106,10 +110,25 @@ class Progress:
             rows = {}
             for name, ids in grouped.items():
                 records = [self._problems[i] for i in ids]
-                rows[name] = Row(name, records[0].chapter, mastery([self._of(i) for i in ids]), len(records),
+                rows[name] = Row(name, records[0].chapter, self._fold((by, name), ids), len(records),
                                  sum(r.checks for r in records), sum(r.seconds for r in records))
             self._tables[by] = rows
             return rows
+
+    def _fold(self, group: tuple[str, str], ids: list[int]) -> Mastery:
+        """The group's mastery, its problems' evidence folded in order; the part of the fold before the first
+        problem whose rows changed is kept (new rows are nearly always the latest problem's)."""
+        kept = self._folds.get(group, [])
+        same = 0
+        while same < min(len(kept), len(ids)) and kept[same][:2] == (ids[same], self._changes.get(ids[same], 0)):
+            same += 1
+        fold = kept[:same]
+        estimate = fold[-1][2] if fold else Mastery()
+        for problem_id in ids[same:]:
+            estimate = after(estimate, self._of(problem_id))
+            fold.append((problem_id, self._changes.get(problem_id, 0), estimate))
+        self._folds[group] = fold
+        return estimate
 
     def _of(self, problem_id: int) -> tuple[Evidence, ...]:
         if problem_id not in self._evidence:

@@ -75,6 +75,10 @@ def test_every_event_moves_mastery_the_way_it_should(bank, actions):
                 answered.add(part)
             else:  # blank or unreadable: no evidence
                 assert moved == pytest.approx(0, abs=1e-12), action
+        # what was kept of the fold between events is what reading the whole file afresh gives
+        fresh = Practice(bank, Store(Path(folder) / "p.sqlite3"))
+        assert fresh.table("topic") == practice.table("topic")
+        assert fresh.table("template") == practice.table("template")
 
 
 def _practised(bank, folder: Path, last: str) -> Practice:
