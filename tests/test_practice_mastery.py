@@ -166,7 +166,7 @@ def test_the_template_just_practised_is_avoided_when_another_exists():
 def test_the_next_hint_costs_what_problem_evidence_will_charge():
     from practice.mastery import next_hint_cost
 
-    assert [next_hint_cost(False, False, n) for n in range(5)] == [HINT_COST, HINT_COST, HINT_COST, 0.0, 0.0]
+    assert [next_hint_cost(False, False, n) for n in range(5)] == [HINT, HINT, HINT, 0.0, 0.0]
     assert next_hint_cost(True, False, 0) == next_hint_cost(False, True, 0) == 0.0
     for shown in range(5):
         charged = problem_evidence([PartEvents(1.0, None, tuple(float(t) for t in range(shown + 1)))])

@@ -147,8 +147,8 @@ def solution_cost_text(problem: Problem, state: State) -> str:
 def costs_now(practice: Practice, problem: Problem, state: State) -> dict[str, str]:
     """Every cost the page shows, as it stands (sent with each check, hint and solution)."""
     def more(part_id: str) -> bool:
-        shown = state.hints.get(part_id, 0)
-        return not shown or shown < len(practice.hints(problem, part_id, state))
+        hinted = state.hints.get(part_id, 0)
+        return not hinted or hinted < len(practice.hints(problem, part_id, state))
 
     return {**{p.id: hint_cost_text(p.id, state, more(p.id)) for p in problem.template.parts},
             "solution": solution_cost_text(problem, state)}
