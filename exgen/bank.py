@@ -5,7 +5,6 @@ the line, so an author fixes a bank in one pass (mkdocs-style) rather than one e
 """
 from __future__ import annotations
 
-import importlib
 import os
 from dataclasses import dataclass
 from decimal import Decimal, InvalidOperation
@@ -13,7 +12,7 @@ from functools import lru_cache, partial
 from importlib import resources
 from pathlib import Path
 
-from . import expr
+from . import expr, references
 from .answertypes import answer_type, names as answer_type_names
 from .domains import domain_of, drawn_values, parse_domain
 from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
@@ -61,6 +60,17 @@ def bank_dirs(extra: list[Path] | None = None) -> list[Path]:
     return [Path(str(resources.files("exgen.banks")))] + from_env + list(extra or [])
 
 
+def refuse_code_in(folder: Path, extra: list[Path] | None = None) -> None:
+    """Stop before a folder of templates that is, holds or lies in `folder`, one students wrote (the answers
+    handed in): its YAML would be read as templates and its code run. A bank is the instructor's own."""
+    written = Path(folder).resolve()
+    for directory in bank_dirs(extra):
+        found = directory.resolve()
+        if found == written or found.is_relative_to(written) or written.is_relative_to(found):
+            raise ExgenError(f"{directory}: a folder of templates cannot be, hold or lie in the folder of answers "
+                             f"handed in ({folder}): a bank's code runs when it loads; keep the two apart")
+
+
 def load_bank(extra: list[Path] | None = None, full: bool = True) -> Bank:
     """Every template of the bank. `full` False leaves out the checks that import code or parse text
     (that each solver and figure function exists, that texts name only parameters, that reported units
@@ -76,7 +86,7 @@ def _load_bank(dirs: tuple[Path, ...], full: bool = True) -> Bank:
     for directory in dirs:
         for path in sorted(directory.rglob("*.yaml")):
             try:
-                template = load_template(path, full)
+                template = load_template(path, full, directory)
             except BankError as exc:
                 errors.extend(exc.errors)
                 continue
@@ -89,13 +99,15 @@ def _load_bank(dirs: tuple[Path, ...], full: bool = True) -> Bank:
     return Bank(templates)
 
 
-def load_template(path: Path, full: bool = True) -> Template:
-    """Read one template file, raising BankError with every problem found in it (`full`: see load_bank)."""
+def load_template(path: Path, full: bool = True, bank_dir: Path | None = None) -> Template:
+    """Read one template file, raising BankError with every problem found in it (`full`: see load_bank).
+    `bank_dir` is the folder of templates it belongs to (its own code may lie anywhere in it); by default
+    the file's own folder."""
     try:
         root, data = read_yaml(path, "a template file")
     except YamlFileError as exc:
         raise BankError([TemplateError(path, "", exc.detail, exc.line, exc.column)]) from None
-    reader = _Reader(path, root, full, data)
+    reader = _Reader(path, root, full, data, bank_dir)
     template = reader.template(data, data_digest(_issued(data)))
     if reader.errors:
         raise BankError(reader.errors)
@@ -118,8 +130,9 @@ def _is_text(spec: ParamSpec) -> bool:
 class _Reader:
     """Turns parsed YAML into a Template, collecting errors with their lines."""
 
-    def __init__(self, path: Path, root, full: bool = True, data=None):
+    def __init__(self, path: Path, root, full: bool = True, data=None, bank_dir: Path | None = None):
         self.path, self.root, self.errors, self.full, self.data = path, root, [], full, data
+        self.bank_dir = bank_dir or path.parent
 
     def error(self, keypath: tuple, message: str) -> None:
         key = ".".join(str(k) for k in keypath)
@@ -159,7 +172,7 @@ class _Reader:
             section=str(data.get("section", "")), params=params, require=require, solver=solver or "",
             statement=statement, parts=parts, figure=figure, key_figures=key_figures,
             source=str(data.get("source", "")),
-            topic=str(data.get("topic", "")), path=self.path, digest=digest,
+            topic=str(data.get("topic", "")), path=self.path, bank_dir=self.bank_dir, digest=digest,
             report=self.report(data.get("report") or []),
         )
 
@@ -327,28 +340,16 @@ class _Reader:
             out.append(ReportSpec(str(item["what"]), str(item["value"]), unit, float(bounds[0]), float(bounds[1])))
         return tuple(out)
 
-    def reference(self, ref, package: str, where) -> str | None:
-        """'belts:flat_belt_power' -> checks exgen.<package>.belts has that function."""
+    def reference(self, ref, kind: str, where) -> str | None:
+        """'belts:flat_belt_power' (exgen.<kind>.belts) or './cam.py:rise' (a file of the bank), checked;
+        `full` also imports it and checks its function (exgen.references)."""
         if ref is None:
             return None
-        module_name, _, attr = str(ref).partition(":")
-        if not attr or not module_name.isidentifier():
-            self.error(where, f"must be 'module:function' naming a function in exgen.{package}")
-            return None
-        if not self.full:  # the module's file is there; its function is looked up when first used
-            if not (Path(__file__).parent / package / f"{module_name}.py").is_file():
-                self.error(where, f"no module exgen.{package}.{module_name}")
-                return None
-            return str(ref)
         try:
-            module = importlib.import_module(f"exgen.{package}.{module_name}")
-        except ImportError:
-            self.error(where, f"no module exgen.{package}.{module_name}")
+            return references.check(str(ref), kind, self.path, self.bank_dir, self.full)
+        except ValueError as exc:
+            self.error(where, str(exc))
             return None
-        if not callable(getattr(module, attr, None)):
-            self.error(where, f"exgen.{package}.{module_name} has no function {attr!r}")
-            return None
-        return str(ref)
 
     def check_text(self, text: str, names: set, where) -> None:
         if not self.full:

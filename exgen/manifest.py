@@ -180,7 +180,7 @@ def _what_changed(manifest: Manifest, template, recorded: dict, current) -> list
         changed.append(f"its template file {template.path} changed")
     names = sorted(set(recorded.get("code", [])) | set(recorded.get("data", [])))
     for name in names:
-        now = current_hash(name)
+        now = current_hash(name, template)
         if now is None:
             changed.append(f"{name} is gone")
         elif now != manifest.files.get(name):

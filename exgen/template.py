@@ -123,6 +123,7 @@ class Template:
     source: str = ""
     topic: str = ""
     path: Path | None = None
+    bank_dir: Path | None = None  # the folder of templates it was loaded from, which may hold its own code
     digest: str = ""  # sha256 of the parsed data (exgen.versions.data_digest); its full version: template_version
     report: tuple[ReportSpec, ...] = ()
 

@@ -1,11 +1,10 @@
 """A Variant: one drawn problem, frozen. Every renderer and the grader read it; none change it."""
 from __future__ import annotations
 
-import importlib
 import traceback
 from dataclasses import dataclass, field
 from decimal import Decimal
-from functools import cached_property, lru_cache
+from functools import cached_property
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
@@ -17,6 +16,7 @@ from .derivation import PLACEHOLDER, Derivation, Params, Step, default_symbol
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
 from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
+from .references import resolve
 from .template import PartSpec, Template
 from .text import render_text
 
@@ -119,16 +119,6 @@ class Variant:
     def fill(self, text: str) -> str:
         """A text of the template (a hint, say) with this variant's given values, as its statement has them."""
         return render_text(text, {p.name: p for p in self.params})
-
-
-@lru_cache(maxsize=256)
-def resolve(reference: str, package: str):
-    """'belts:flat_belt_power' -> the function exgen.<package>.belts.flat_belt_power."""
-    module_name, _, attr = reference.partition(":")
-    try:
-        return getattr(importlib.import_module(f"exgen.{package}.{module_name}"), attr)
-    except (ImportError, AttributeError):  # a bank loaded without its full check (exgen.bank.load_bank)
-        raise ExgenError(f"{reference!r}: exgen.{package}.{module_name} has no function {attr!r}") from None
 
 
 def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES, rejected=None) -> Variant:
@@ -244,18 +234,20 @@ def run_solver(template: Template, si: dict, overrides: dict | None = None, stri
         raise
     except Exception as exc:  # noqa: BLE001  (every other exception is a defect, reported as one)
         given = "" if strict else "other earlier answers" if overrides else "the values given"
-        raise SolverFailure(template.id, exc, where_raised(exc), seed, given) from exc
+        raise SolverFailure(template.id, exc, where_raised(exc, solver), seed, given) from exc
     return derivation
 
 
-def where_raised(exc: BaseException) -> str:
+def where_raised(exc: BaseException, solver=None) -> str:
     """'exgen/mechanics/flywheels.py:160 in speed_after (from exgen/solvers/flywheels.py:88 in punching_press)':
-    the line that raised, and the solver's line that led there."""
+    the line that raised, and the solver's line that led there (in exgen.solvers or the solver's own file)."""
     frames = [f for f in traceback.extract_tb(exc.__traceback__) if f.name != "run_solver"]
     if not frames:
         return ""
     raised = frames[-1]
-    solver = next((f for f in reversed(frames) if Path(f.filename).parent.name == "solvers"), raised)
+    own = getattr(getattr(solver, "__code__", None), "co_filename", None)
+    solver = next((f for f in reversed(frames) if Path(f.filename).parent.name == "solvers" or f.filename == own),
+                  raised)
     text = f"{_short(raised.filename)}:{raised.lineno} in {raised.name}"
     return text if solver is raised else f"{text} (from {_short(solver.filename)}:{solver.lineno} in {solver.name})"
 

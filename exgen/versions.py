@@ -1,8 +1,9 @@
 """A version per template that changes exactly when something that can change a number or a verdict does.
 
 It covers the template's meaning (its parsed data, canonically serialised, so comments and layout do
-not count), the code it runs (the import closure of its solver and of the drawing and grading code,
-each module hashed from its syntax tree without docstrings, so comments and formatting do not count),
+not count), the code it runs (the import closure of its solver, packaged or a file of its bank folder, and
+of the drawing and grading code, each module hashed from its syntax tree without docstrings, so comments
+and formatting do not count),
 the data files that code reads (unit and choice aliases, mistake texts), and the versions of the
 numerical libraries. The manifest records each part, so a mismatch at grading names what changed.
 
@@ -18,6 +19,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
+from .references import local_file, split
 from .template import Template
 
 #: Packages whose modules are followed; anything else imported (numpy, pint) is counted by its version.
@@ -29,6 +31,8 @@ OUTPUT_ONLY = ("exgen.render", "exgen.figures", "exgen.cli", "exgen.generate", "
 #: Folders of data files the code reads (aliases, messages).
 DATA_DIRS = ("exgen/data", "graders/data")
 LIBRARIES = ("numpy", "pint")
+#: How a version names a file of a bank folder (a solver beside its template).
+BANK_PREFIX = "bank:"
 
 
 @dataclass(frozen=True)
@@ -69,9 +73,14 @@ def _canonical(value):
 
 
 def template_version(template: Template) -> TemplateVersion:
-    solver_module = f"exgen.solvers.{template.solver.partition(':')[0]}"
-    modules = _closure((solver_module,) + COMMON_ROOTS)
-    code = {_relative(path): _code_hash(path) for path in modules}
+    solver_file = local_file(template.solver)
+    if solver_file is None:
+        modules = _closure((f"exgen.solvers.{split(template.solver)[0]}",) + COMMON_ROOTS)
+        code = {}
+    else:  # a solver of the bank's own: its file, and ours that it imports
+        modules = _closure(tuple(_imports("", solver_file)) + COMMON_ROOTS)
+        code = {bank_name(template, solver_file): _code_hash(solver_file)}
+    code.update({_relative(path): _code_hash(path) for path in modules})
     data = _data_files()
     libraries = _library_versions()
     digest = hashlib.sha256()
@@ -81,10 +90,22 @@ def template_version(template: Template) -> TemplateVersion:
     return TemplateVersion(digest.hexdigest(), template.digest, code, data, libraries)
 
 
-def current_hash(name: str) -> str | None:
-    """What a name a version records ("exgen/solvers/belts.py", "exgen/data/x.txt", "numpy") is now."""
+def bank_name(template: Template, path: Path) -> str:
+    """What a version calls a file of a bank: 'bank:<folder>/<path in it>', wherever the folder lies now."""
+    root = Path(template.bank_dir or path.parent).resolve()
+    return f"{BANK_PREFIX}{root.name}/{path.relative_to(root).as_posix()}"
+
+
+def current_hash(name: str, template: Template | None = None) -> str | None:
+    """What a name a version records ("exgen/solvers/belts.py", "exgen/data/x.txt", "numpy", or a file of
+    `template`'s bank, "bank:course/cams.py") is now."""
     if name in LIBRARIES:
         return _library_versions()[name]
+    if name.startswith(BANK_PREFIX):
+        root = Path(template.bank_dir).resolve() if template is not None and template.bank_dir else None
+        folder, _, rest = name[len(BANK_PREFIX):].partition("/")
+        path = root / rest if root is not None and root.name == folder and rest else None
+        return _code_hash(path) if path is not None and path.is_file() else None
     package, _, rest = name.partition("/")
     root = _roots().get(package)
     path = root / rest if root is not None and rest else None
@@ -153,10 +174,13 @@ def _closure(roots: tuple[str, ...]) -> tuple[Path, ...]:
 
 
 def _imports(module: str, path: Path) -> list[str]:
-    """Modules of ours that `module` imports, relative imports resolved; `from x import y` may name a module y."""
+    """Modules of ours that `module` imports, relative imports resolved; `from x import y` may name a module y.
+    A file of a bank (`module` "") has no package: only its imports of exgen by name count."""
     package = module if path.name == "__init__.py" else module.rpartition(".")[0]
     found = []
     for level, name, names in _parsed(path)[0]:
+        if level and not module:
+            continue
         if level:
             base = package.split(".")
             source = ".".join(base[: len(base) - level + 1] + ([name] if name else []))
@@ -168,11 +192,16 @@ def _imports(module: str, path: Path) -> list[str]:
     return found
 
 
-@lru_cache(maxsize=None)
 def _parsed(path: Path) -> tuple[tuple, str, bool]:
-    """One parse per file: its imports (level, module, names), the hash of its syntax tree, and whether
-    it imports the modules of its own package by listing them (pkgutil.iter_modules: a registry)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"), filename=str(path))
+    """One parse per file text: its imports (level, module, names), the hash of its syntax tree, and
+    whether it imports the modules of its own package by listing them (pkgutil.iter_modules: a registry).
+    Keyed by the text, so a file edited while the process runs is read as it is now."""
+    return _parsed_text(path.read_text(encoding="utf-8"), str(path))
+
+
+@lru_cache(maxsize=None)
+def _parsed_text(text: str, filename: str) -> tuple[tuple, str, bool]:
+    tree = ast.parse(text, filename=filename)
     imports, registry = [], False
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):

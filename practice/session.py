@@ -20,10 +20,12 @@ from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResu
 
 from exgen.errors import ExgenError
 from exgen.figures import figure_svg, key_figure_svgs
+from exgen.references import resolve
 from exgen.render.solution import Solution, solution
 from exgen.seeds import PRACTICE_SEEDS, practice_seed
 from exgen.template import Template
-from exgen.variant import Variant, make_variant, resolve
+from exgen.variant import Variant, make_variant
+
 from . import mastery
 from .hints import Hint, hint_ladder
 from .progress import Progress, Row

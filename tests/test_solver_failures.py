@@ -2,11 +2,11 @@
 InvalidDraw it raises by name turns a draw down. `exgen validate` names the template, the seed, the exception
 and where it rose, and fails; `show` and `solve` say it in one line; grading says why no credit was carried
 forward when the working breaks down on a student's own earlier answers."""
-import sys
+import shutil
+from pathlib import Path
 
 import pytest
 
-import validate_fixture
 from exgen.assignment import Assignment, QuestionSpec, Student
 from exgen.bank import load_template
 from exgen.cli import main
@@ -19,10 +19,11 @@ from graders.grade import grade_variant
 from graders.report import report_page
 from graders.results import GRADED, WRONG, BatchResult, Column, SheetResult
 
+SOLVERS = Path(__file__).parent / "fixtures" / "validate_solvers.py"
 TEMPLATE = """\
 id: demo.crash
 title: Crash
-solver: validate_fixture:{solver}
+solver: ./validate_solvers.py:{solver}
 params:
   x: {{min: 1, max: 5, step: 0.01, unit: m}}
 statement: A length of {{{{ x }}}}.
@@ -31,12 +32,8 @@ parts:
 """
 
 
-@pytest.fixture(autouse=True)
-def fixture_solvers(monkeypatch):
-    monkeypatch.setitem(sys.modules, "exgen.solvers.validate_fixture", validate_fixture)
-
-
 def fixture_template(tmp_path, solver: str):
+    shutil.copy(SOLVERS, tmp_path)  # the template's solver, in the file beside it
     path = tmp_path / "t.yaml"
     path.write_text(TEMPLATE.format(solver=solver), encoding="utf-8")
     return load_template(path)
@@ -62,7 +59,7 @@ def test_a_crash_is_raised_as_a_defect_not_redrawn(tmp_path):
         make_variant(template, crashing)
     message = str(info.value)
     assert message.startswith(f"demo.crash, seed {crashing}: the solver failed with ZeroDivisionError: ")
-    assert "tests/validate_fixture.py:" in message and "in crashes_below_two" in message
+    assert "validate_solvers.py:" in message and "in crashes_below_two" in message
 
 
 def test_a_rejection_raised_by_name_is_redrawn(tmp_path):
@@ -75,7 +72,7 @@ def test_validate_fails_and_names_the_seed_the_exception_and_where(tmp_path):
     report = validate_template(fixture_template(tmp_path, "crashes_below_two"), seeds=20)
     assert not report.ok
     assert report.problems and all(
-        p.startswith("seed ") and "ZeroDivisionError" in p and "validate_fixture.py" in p for p in report.problems)
+        p.startswith("seed ") and "ZeroDivisionError" in p and "validate_solvers.py" in p for p in report.problems)
 
 
 def test_validate_catches_a_belt_solver_crashing_on_a_third_of_the_draws(bank, crash_when_mu_is_035, capsys):

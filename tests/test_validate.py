@@ -1,12 +1,11 @@
 """What validate and the drawing rules check that an author cannot see in the YAML: a named mistake
 kept apart from the answer (every answer type), `uses:` against the solver, steps named like givens,
 mistakes without words."""
-import sys
+import shutil
 from pathlib import Path
 
 import pytest
 
-import validate_fixture
 from exgen.bank import load_template
 from exgen.errors import DrawError, ExgenError
 from exgen.validate import validate_template
@@ -14,10 +13,11 @@ from exgen.variant import make_variant
 from graders.grade import grade_variant
 from graders.results import CARRIED, WRONG
 
+SOLVERS = Path(__file__).parent / "fixtures" / "validate_solvers.py"
 TEMPLATE = """\
 id: demo.rules
 title: Rules
-solver: validate_fixture:{solver}
+solver: ./validate_solvers.py:{solver}
 params:
   x: {{min: 1, max: 5, step: 0.01, unit: m}}
 statement: A length of {{{{ x }}}}.
@@ -26,12 +26,8 @@ parts:
 """
 
 
-@pytest.fixture(autouse=True)
-def fixture_solvers(monkeypatch):
-    monkeypatch.setitem(sys.modules, "exgen.solvers.validate_fixture", validate_fixture)  # put back as found
-
-
 def template(tmp_path: Path, solver: str, parts: str):
+    shutil.copy(SOLVERS, tmp_path)  # the template's solver, in the file beside it
     path = tmp_path / "t.yaml"
     path.write_text(TEMPLATE.format(solver=solver, parts=parts), encoding="utf-8")
     return load_template(path)

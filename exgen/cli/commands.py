@@ -191,6 +191,7 @@ def cmd_grade(args) -> int:
     from graders.grade import grade_issued
     from graders.report import write_results
 
+    from ..bank import refuse_code_in
     from ..manifest import read_manifest
     from ..outdir import check_target
 
@@ -201,6 +202,7 @@ def cmd_grade(args) -> int:
                          f"{submissions}: not a folder: give the folder holding the answer files")
     _tidy(Path(args.out))
     check_target(Path(args.out), "grade")  # before any work: a folder that cannot be replaced stops here
+    refuse_code_in(submissions, [Path(p) for p in args.bank])  # never a template, nor code, from students
     bank = _bank(args)
     recorded = Path(manifest.secret_source) if manifest.secret_source and not manifest.secret_source.startswith("$") \
         else None
