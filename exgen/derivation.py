@@ -13,10 +13,10 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
-from functools import lru_cache
 from typing import Any, NamedTuple
 
 from .errors import ExgenError, InvalidDraw
+from .template import default_symbol
 
 PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)")
 
@@ -183,33 +183,6 @@ class Derivation:
         if name in self._by_name:
             return self._by_name[name].value
         return getattr(self.params, name)
-
-
-
-
-GREEK = {
-    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda",
-    "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega",
-    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
-}
-
-
-@lru_cache(maxsize=4096)
-def default_symbol(name: str) -> str:
-    """A LaTeX symbol from a name: mu -> \\mu, d1 -> d_1, T_max -> T_{\\mathrm{max}}, omega_2 -> \\omega_2."""
-    if "_" in name:
-        base, sub = name.split("_", 1)
-    else:
-        match = re.fullmatch(r"(.*?[A-Za-z])(\d+)", name)
-        base, sub = match.groups() if match else (name, "")
-    head = f"\\{base}" if base in GREEK else base
-    if not sub:
-        return head
-    if sub in GREEK:
-        sub = f"\\{sub}"
-    elif len(sub) > 1 and not sub.isdigit():
-        sub = r"\mathrm{" + sub + "}"
-    return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"
 
 
 def is_finite(value) -> bool:

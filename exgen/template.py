@@ -4,8 +4,10 @@ Instances are built once by `exgen.bank` (which validates them) and never change
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from decimal import Decimal
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -136,3 +138,28 @@ class Template:
     @property
     def points(self) -> float:
         return sum(p.points for p in self.parts)
+
+
+GREEK = {
+    "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa", "lambda",
+    "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi", "chi", "psi", "omega",
+    "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Phi", "Psi", "Omega",
+}
+
+
+@lru_cache(maxsize=4096)
+def default_symbol(name: str) -> str:
+    """The LaTeX symbol of a parameter or step that gives none, made from its name: mu -> \\mu, d1 -> d_1, T_max -> T_{\\mathrm{max}}, omega_2 -> \\omega_2."""
+    if "_" in name:
+        base, sub = name.split("_", 1)
+    else:
+        match = re.fullmatch(r"(.*?[A-Za-z])(\d+)", name)
+        base, sub = match.groups() if match else (name, "")
+    head = f"\\{base}" if base in GREEK else base
+    if not sub:
+        return head
+    if sub in GREEK:
+        sub = f"\\{sub}"
+    elif len(sub) > 1 and not sub.isdigit():
+        sub = r"\mathrm{" + sub + "}"
+    return f"{head}_{{{sub}}}" if len(sub) > 1 else f"{head}_{sub}"

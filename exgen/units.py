@@ -120,9 +120,9 @@ def _unit_table_rows() -> dict[str, tuple[UnitInfo, str]]:
 
 
 def unit_table(names) -> str:
-    """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.units`)."""
+    """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.unit_table`)."""
     lines = ["# unit, factor to coherent SI, dimension, angles, pint's spelling: pint's answers, stored "
-             "(python -m exgen.units)"]
+             "(python -m exgen.unit_table)"]
     for name in sorted(set(names) - {"", "1", "dimensionless"}):
         info = _ask_pint(name)
         lines.append(f"{name}\t{info.factor!r}\t{info.dims}\t{info.angle}\t{_spell_with_pint(name)}")
@@ -302,37 +302,3 @@ def format_quantity(value: float, unit: str, sig: int = 4) -> str:
     if not shown:
         return number
     return f"{number}{shown}" if shown in ("\u00b0", "%") else f"{number} {shown}"
-
-
-#: Units stored beside those the bank's templates use: what students commonly type.
-COMMON_UNITS = ("N", "kN", "MN", "N*m", "kN*m", "Nm", "W", "kW", "MW", "J", "kJ", "m", "mm", "cm", "km", "s",
-                "min", "h", "kg", "g", "t", "rpm", "rev/min", "rad/s", "rad/s^2", "Hz", "deg", "rad", "m/s",
-                "m/s^2", "km/h", "Pa", "kPa", "MPa", "GPa", "N/m", "kN/m", "N/mm", "kg*m^2", "kg*m", "%")
-
-
-def bank_units(bank) -> set[str]:
-    """Every unit a bank's templates write: parameters, parts, reported quantities, and the steps and
-    table columns of a variant of each (the units their worked solutions are in)."""
-    from .answertypes.quantity import unit_families
-    from .variant import make_variant
-
-    found = set(COMMON_UNITS) | set(SI_UNITS.values())
-    found |= {unit for family in unit_families() for unit in family}  # a value is read in any of its kind
-    for template in bank:
-        found |= {p.unit for p in template.params} | {p.unit for p in template.parts}
-        found |= {r.unit for r in template.report}
-        variant = make_variant(template, 1)
-        found |= {u for s in variant.steps for u in (s.unit, s.shown) if isinstance(u, str)}  # worked in, shown in
-        found |= {c.unit for table in variant.inserts for c in getattr(table, "columns", ())}
-    return found
-
-
-if __name__ == "__main__":  # python -m exgen.units: rewrite the stored table from pint and the bank
-    from pathlib import Path
-
-    from exgen import units  # this file runs as __main__: the module the others import is another one
-    from exgen.bank import load_bank
-
-    units._unit_table_rows = dict  # ask pint for everything, the stored table unread
-    Path(__file__).parent.joinpath(UNIT_TABLE).write_text(units.unit_table(units.bank_units(load_bank())),
-                                                          encoding="utf-8")

@@ -12,12 +12,12 @@ from typing import Any, Mapping
 from . import units
 from .answertypes import answer_type
 from .answertypes.base import MISTAKE_GAP
-from .derivation import PLACEHOLDER, Derivation, Params, Step, default_symbol
+from .derivation import PLACEHOLDER, Derivation, Params, Step
 from .draw import draw_values, failed_requirement, generator, si_values
 from .errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
 from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
 from .references import resolve
-from .template import PartSpec, Template
+from .template import PartSpec, Template, default_symbol
 from .text import render_text
 
 MAX_TRIES = 1000

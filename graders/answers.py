@@ -15,10 +15,22 @@ from pathlib import Path
 from exgen.errors import SubmissionError
 
 from .echo import shown
-from .formats import BINARY, LOADERS, READ_SECONDS, SUFFIXES, Loaded, file_kind, read_text
+from .formats import BINARY, READ_SECONDS, SUFFIXES, Loaded, file_kind, load_csv, load_json, load_yaml, read_text
 
 HEADER_KEYS = ("assignment", "student", "code")
 MAX_HEADER_LENGTH = 200
+
+
+def load_pdf(path: Path, text: str | None = None, deadline: float | None = None) -> Loaded:
+    """A sheet PDF's typed answers (graders.pdf_form, which reads with the formats' caps: imported only
+    when a PDF is read)."""
+    from .pdf_form import load_pdf as load
+
+    return load(path, text, deadline)
+
+
+#: Each kind of answer file's reader, by the kind its name says (formats.SUFFIXES).
+LOADERS = {"yaml": load_yaml, "json": load_json, "csv": load_csv, "pdf": load_pdf}
 
 
 @dataclass(frozen=True)

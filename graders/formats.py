@@ -335,12 +335,3 @@ def load_csv(path: Path, text: str, deadline: float | None = None) -> Loaded:
         raise SubmissionError(path, f"not valid CSV: {exc}", reader.line_num or None) from None
     return loaded
 
-
-def load_pdf(path: Path, text: str | None = None, deadline: float | None = None) -> Loaded:
-    """A sheet PDF's typed answers (graders.pdf_form, imported only when a PDF is read)."""
-    from .pdf_form import load_pdf as load
-
-    return load(path, text, deadline)
-
-
-LOADERS = {"yaml": load_yaml, "json": load_json, "csv": load_csv, "pdf": load_pdf}

@@ -1,6 +1,7 @@
 import pytest
 
-from exgen.derivation import Derivation, Params, default_symbol
+from exgen.derivation import Derivation, Params
+from exgen.template import default_symbol
 from exgen.errors import InvalidDraw
 from exgen.variant import answer_for, rerun
 

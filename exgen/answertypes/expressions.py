@@ -24,7 +24,7 @@ import re
 from dataclasses import dataclass
 from typing import Mapping
 
-from ..derivation import default_symbol
+from ..template import default_symbol
 from ..errors import FormatProblem
 
 MAX_LENGTH = 200          # characters, checked before anything else

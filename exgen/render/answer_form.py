@@ -18,7 +18,6 @@ import re
 import yaml
 
 from ..answertypes import answer_type
-from ..assignment import Sheet
 from .unicode_math import text_to_plain
 
 #: Characters YAML forbids or reads as line breaks; a comment must hold none of them.
@@ -42,8 +41,9 @@ FORM_HEADER = """\
 """
 
 
-def answer_form(sheet: Sheet) -> str:
-    """The YAML answer file for one student's sheet; read back untouched, every answer is blank."""
+def answer_form(sheet) -> str:
+    """The YAML answer file for one student's sheet (exgen.assignment.Sheet, as every renderer reads it);
+    read back untouched, every answer is blank."""
     who = " ".join(x for x in (sheet.student.id, f"({sheet.student.name})" if sheet.student.name else "") if x)
     lines = [FORM_HEADER.format(title=_comment(sheet.assignment.title), who=_comment(who),
                                 code=_comment(sheet.code), notes=_notes(sheet))]
@@ -60,7 +60,7 @@ def answer_form(sheet: Sheet) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _notes(sheet: Sheet) -> str:
+def _notes(sheet) -> str:
     """Each answer type's own lines, once, for the types on this sheet."""
     kinds = dict.fromkeys(answer_type(p) for q in sheet.questions for p in q.variant.template.parts)
     notes = [kind.form_note() for kind in kinds]

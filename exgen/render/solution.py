@@ -17,8 +17,9 @@ from typing import Any
 
 from .. import units
 from ..answertypes import answer_type
-from ..derivation import Column, Table, default_symbol
+from ..derivation import Column, Table
 from ..errors import ExgenError
+from ..template import default_symbol
 from .arithmetic import NotArithmetic, evaluate
 from .formula import Formula, FormulaError, parse, written
 from .targets import MARKDOWN, PLAIN, SIG, number_parts

@@ -14,8 +14,8 @@ from functools import lru_cache
 from typing import Any
 
 from .. import units
-from ..derivation import default_symbol
 from ..errors import ExgenError, QuantityError
+from ..template import default_symbol
 from .formula import Formula
 
 @lru_cache(maxsize=512)
