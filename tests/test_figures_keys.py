@@ -71,19 +71,25 @@ def test_a_polygon_is_drawn_to_one_scale(bank):
     assert any(t.startswith("B·b = ") for t in texts(svg))
 
 
-def test_crank_diagrams_put_cranks_at_theta_and_twice_theta(bank):
-    variant = make_variant(bank.get("balancing.inline_engine_firing"), 2)
-    ((_, svg),) = key_figure_svgs(variant)
-    labels = texts(svg)
-    count = sum(1 for s in variant.steps if s.name.startswith("x") and s.name[1:].isdigit())
-    angles = {i: round(math.degrees(_value(variant, f"theta{i}"))) for i in range(1, count + 1)}
-    for harmonic in (1, 2):
-        groups = {}
-        for i, a in angles.items():
-            groups.setdefault((harmonic * a) % 360, []).append(str(i))
-        for deg, names in groups.items():
-            assert f"{', '.join(names)}: {deg}°" in labels
-    assert "primary cranks (θ)" in labels and "secondary cranks (2θ)" in labels
+@pytest.mark.parametrize("template_id", ["balancing.inline_engine_firing", "balancing.inline_engine_unbalance"])
+def test_crank_diagrams_put_every_crank_at_theta_and_twice_theta(bank, template_id):
+    """The diagrams counted their cranks by steps x1, x2, ... that the working no longer records (the distances
+    went into its table), and drew none; the test counted them the same way and checked nothing."""
+    for seed in range(4):
+        variant = make_variant(bank.get(template_id), seed)
+        ((_, svg),) = key_figure_svgs(variant)
+        labels = texts(svg)
+        cylinders = len(variant.inserts[0].rows)  # the working's table has a row per cylinder
+        angles = {i: round(math.degrees(_value(variant, f"theta{i}"))) for i in range(1, cylinders + 1)}
+        assert cylinders >= 3
+        for harmonic in (1, 2):
+            groups = {}
+            for i, a in angles.items():
+                groups.setdefault((harmonic * a) % 360, []).append(str(i))
+            for deg, names in groups.items():
+                assert f"{', '.join(names)}: {deg}°" in labels
+        assert sum(1 for t in labels if t[:1].isdigit() and t.endswith("°") and ": " in t) >= 2
+        assert "primary cranks (θ)" in labels and "secondary cranks (2θ)" in labels
 
 
 def test_key_figures_reach_the_key_only(bank, tmp_path):

@@ -7,6 +7,7 @@ correction the working finds, labelled with its value. Each polygon has its own 
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -14,6 +15,7 @@ from .. import units
 from .balancing import _si
 from .shafts import Convention, Spoke, end_view
 from .svg import FONT_SIZE, LINE, NOTE_SIZE, THIN, Drawing
+from .values import shown
 
 PANEL = 210.0         # px: the largest extent of a polygon
 PANEL_GAP = 90.0      # px between two panels
@@ -182,8 +184,8 @@ def primary_polygons(variant) -> str:
 def crank_diagrams(variant) -> str:
     """Examples 2.6, 2.7: the primary crank diagram (cranks at θ) beside the secondary one (at 2θ);
     cranks that coincide share a spoke and a label."""
-    count = sum(1 for s in variant.steps if s.name.startswith("x") and s.name[1:].isdigit())
-    angles = [_si(variant, f"theta{i}") for i in range(1, count + 1)]
+    count = next(i for i in itertools.count(1) if shown(variant, f"theta{i}") is None) - 1
+    angles = [_si(variant, f"theta{i}") for i in range(1, count + 1)]  # given, or found by the working
     d = Drawing()
     x = 0.0
     for harmonic, caption in ((1, "primary cranks (θ)"), (2, "secondary cranks (2θ)")):
