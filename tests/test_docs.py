@@ -73,3 +73,31 @@ def test_ci_runs_the_readme_test_command():
     ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
     block = next(b for _, b in FENCE.findall((ROOT / "README.md").read_text(encoding="utf-8")) if "pytest" in b)
     assert block.strip() in ci
+
+
+def test_the_readme_counts_the_templates_the_bank_has(bank):
+    """The README said 77 problem templates, and nothing would have noticed the 78th."""
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    (count,) = re.findall(r"(\d+) problem templates", text)
+    assert int(count) == len(bank)
+
+
+@pytest.mark.parametrize("page", PAGES, ids=lambda p: p.name)
+def test_every_test_file_a_page_names_is_there(page, bank):
+    """The template guide's first step sent a newcomer to tests/test_mechanics_<topic>.py, and for the belts
+    there is none. A name with `<topic>` in it must be a file for every topic of the bank; any other
+    placeholder (`<chapter>`) must match some file."""
+    text = page.read_text(encoding="utf-8")
+    for name in re.findall(r"\btests/[\w/<>.-]+?\.py\b", text):
+        names = [name.replace("<topic>", t.topic) for t in bank] if "<topic>" in name else [name]
+        for each in names:
+            assert sorted(ROOT.glob(re.sub(r"<[^>]+>", "*", each))), f"{page.name}: {each}"
+
+
+def test_the_catalogues_are_in_step_with_the_code(bank):
+    """The figures a template can name, the parts of a figure, the named mistakes and what each answer type
+    overrides, as the guides print them: made from the code and data by tests/catalogues.py."""
+    from catalogues import pages
+
+    for path, text in pages(bank).items():
+        assert path.read_text(encoding="utf-8") == text, f"{path.name} is out of step: python -m tests.catalogues"

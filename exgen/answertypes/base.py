@@ -106,6 +106,7 @@ class AnswerType:
         return dict(derivation.mistakes.get(part.answer, {}))
 
     def step_value(self, part: PartSpec, derivation, name: str) -> Any:
+        """The value of the solver's step `name` (ExgenError naming the part when the solver records none)."""
         if name not in derivation:
             raise ExgenError(f"{name!r} (answer of part {part.id}) is not a step the solver records")
         return derivation[name].value
