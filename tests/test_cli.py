@@ -28,6 +28,22 @@ def test_show_is_reproducible_by_seed(capsys):
     assert capsys.readouterr().out == first and "(a)" in first
 
 
+def test_show_writes_the_figures_to_look_at(tmp_path, capsys):
+    """A template author had no way to see a figure short of issuing an assignment."""
+    from exgen.bank import load_bank
+    from exgen.figures import figure_svg, key_figure_svgs
+    from exgen.variant import make_variant
+
+    assert main(["show", "balancing.static_balance", "--seed", "3", "--key", "--figures", str(tmp_path)]) == 0
+    variant = make_variant(load_bank().get("balancing.static_balance"), 3)
+    assert (tmp_path / "q1.svg").read_text(encoding="utf-8") == figure_svg(variant)
+    ((name, key_svg),) = key_figure_svgs(variant)
+    assert (tmp_path / f"q1-{name}.svg").read_text(encoding="utf-8") == key_svg
+    assert f"figure: {tmp_path / 'q1.svg'}" in capsys.readouterr().err
+    assert main(["show", "flywheels.punching_press", "--seed", "3", "--figures", str(tmp_path / "none")]) == 1
+    assert capsys.readouterr().err.strip() == "exgen: flywheels.punching_press has no figure on its sheet"
+
+
 def test_solve_prints_example_1_5(capsys):
     assert main(["solve", "belts.flat_belt_power", *EXAMPLE_1_5]) == 0
     out = capsys.readouterr().out

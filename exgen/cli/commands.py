@@ -100,10 +100,28 @@ def cmd_show(args) -> int:
 
     template = _bank(args, full=False).get(args.id)
     seed = args.seed if args.seed is not None else secrets.randbits(32)
-    print(variant_text(make_variant(template, seed), key=args.key))
+    variant = make_variant(template, seed)
+    print(variant_text(variant, key=args.key))
+    if args.figures:
+        for path in _write_figures(variant, Path(args.figures), args.key):
+            print(f"figure: {path}", file=sys.stderr)
     if args.seed is None:
         print(f"\n(seed {seed}: `exgen show {args.id} --seed {seed}` shows this variant again)", file=sys.stderr)
     return 0
+
+
+def _write_figures(variant, folder: Path, key: bool) -> list[Path]:
+    """The variant's sheet figure (and with `key` its key figures) as SVG files named as a sheet's folder names them."""
+    from ..figures import question_figures
+
+    drawn = question_figures("q1", variant)
+    figures = ([drawn.sheet] if drawn.sheet else []) + (list(drawn.key) if key else [])
+    if not figures:
+        raise ExgenError(f"{variant.template.id} has no figure{'' if key else ' on its sheet'}")
+    folder.mkdir(parents=True, exist_ok=True)
+    for figure in figures:
+        (folder / figure.name).write_text(figure.svg, encoding="utf-8")
+    return [folder / figure.name for figure in figures]
 
 
 def cmd_solve(args) -> int:

@@ -84,6 +84,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("id", help="a template id, as `exgen list` prints it")
     p.add_argument("--seed", type=_count(0, SEED_MAX), help="the variant's seed, 0 to 2^65-1 (default: a fresh one)")
     p.add_argument("--key", action="store_true", help="also print the answers and worked solution")
+    p.add_argument("--figures", metavar="DIR", help="also write its figures (the sheet's, and with --key the key's) "
+                                                    "into DIR as SVG files, to look at while writing one")
     p.set_defaults(func=cmd_show)
 
     p = _command(sub, "solve", "solve a template for values you give",
