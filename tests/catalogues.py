@@ -5,6 +5,7 @@ out of step; `python -m tests.catalogues` rewrites them.
 """
 from __future__ import annotations
 
+import ast
 import inspect
 import re
 import sys
@@ -80,6 +81,29 @@ def reads(bank, ref: str, template_ids: list[str], seeds=(1, 2)) -> tuple[list[s
     return givens, steps
 
 
+def needed(function) -> set[str]:
+    """The names a figure cannot be drawn without: the string arguments of its `need(variant, "name")` calls
+    (each stops the figure with an error naming what is missing), in it and in the functions of its module
+    it hands the variant to."""
+    module = inspect.getmodule(function)
+    tree = ast.parse(inspect.getsource(module))
+    functions = {n.name: n for n in tree.body if isinstance(n, ast.FunctionDef)}
+    found, seen, todo = set(), set(), [function.__name__]
+    while todo:
+        name = todo.pop()
+        if name in seen or name not in functions:
+            continue
+        seen.add(name)
+        for node in ast.walk(functions[name]):
+            if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.args
+                    and isinstance(node.args[0], ast.Name) and node.args[0].id == "variant"):
+                continue
+            if node.func.id == "need" and len(node.args) > 1 and isinstance(node.args[1], ast.Constant):
+                found.add(node.args[1].value)
+            todo.append(node.func.id)
+    return found
+
+
 def first_sentence(obj) -> str:
     """A docstring's first sentence: to a full stop before a capital, or its end."""
     text = " ".join((inspect.getdoc(obj) or "").split())
@@ -92,7 +116,9 @@ def figures_catalogue(bank) -> str:
     lines = ["### Figures a template can name", "",
              "`figure: module:function` (or `key_figures: [...]`). *Reads* is what the function looks up by name "
              "in the variants of the templates that name it: givens, and solver steps (in italics: drawn to size "
-             "and labelled `?`, or worked from); a template reusing a figure gives its values those names.", "",
+             "and labelled `?`, or worked from); a template reusing a figure gives its values those names. A name "
+             "in bold is one the figure cannot be drawn without (without it, drawing stops with an error naming "
+             "it); the others it draws when they are there.", "",
              "| figure | what it draws | reads | named by |", "|---|---|---|---|"]
     for stem, module in figure_modules().items():
         for name, function in inspect.getmembers(module, inspect.isfunction):
@@ -104,7 +130,9 @@ def figures_catalogue(bank) -> str:
             ref = f"{stem}:{name}"
             users = named.get(ref, [])
             givens, steps = reads(bank, ref, users)
-            read = ", ".join([f"`{g}`" for g in givens] + [f"*`{s}`*" for s in steps])
+            must = needed(function)
+            read = ", ".join([f"**`{g}`**" if g in must else f"`{g}`" for g in givens]
+                             + [f"***`{s}`***" if s in must else f"*`{s}`*" for s in steps])
             lines.append(f"| `{ref}` | {_cell(first_sentence(function))} | {read} | "
                          f"{', '.join(users) if users else '(none yet)'} |")
     lines += ["", "### Parts a new figure is drawn from", "",
@@ -175,6 +203,19 @@ def mistakes_catalogue(bank) -> str:
             shown = ", ".join(users[:3]) + (f" and {len(users) - 3} more" if len(users) > 3 else "")
             lines.append(f"| `{name}` | {_cell(texts[name])} | {shown or '(no template yet)'} |")
         lines.append("")
+    own = {name: users for name, users in naming.items() if name not in texts}
+    lines += ["### Named with a part's own words only", "",
+              "These names have no default text: each part that names one says it in its own `say:` (the first "
+              "is shown). Reuse one for the same slip with words of your own, or give it a default in "
+              "`exgen/data/mistakes.yaml` when a second template needs it.", "",
+              "| name | the first part's words | named by |", "|---|---|---|"]
+    says = {(t.id, p.id, m.when): m.say for t in bank for p in t.parts for m in p.mistakes}
+    for name in sorted(own):
+        users = [f"{tid} ({', '.join(parts)})" for tid, parts in own[name].items()]
+        tid, parts = next(iter(own[name].items()))
+        shown = ", ".join(users[:3]) + (f" and {len(users) - 3} more" if len(users) > 3 else "")
+        lines.append(f"| `{name}` | {_cell(says[(tid, parts[0], name)])} | {shown} |")
+    lines.append("")
     return "\n".join(lines)
 
 
