@@ -49,6 +49,6 @@ def load() -> str:
 
 
 def allocator() -> str:
-    """Which malloc this process typesets with: Typst's time depends on it (exgen/allocator.py)."""
+    """Which malloc this process typesets with: Typst's time depends on it (exgen/runtime/allocator.py)."""
     preloaded = os.environ.get("LD_PRELOAD", "")
     return "jemalloc preloaded" if "jemalloc" in preloaded else "the system's malloc"

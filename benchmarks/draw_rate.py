@@ -15,8 +15,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).parent))
 from clock import load  # noqa: E402
 
-from exgen.bank import load_bank  # noqa: E402
-from exgen.variant import make_variant  # noqa: E402
+from exgen.load.bank import load_bank  # noqa: E402
+from exgen.solve.variant import make_variant  # noqa: E402
 
 
 def main() -> None:

@@ -11,9 +11,9 @@ import statistics
 import sys
 import time
 
-from exgen.bank import load_bank
 from exgen.figures import question_figures
-from exgen.variant import make_variant
+from exgen.load.bank import load_bank
+from exgen.solve.variant import make_variant
 
 
 def main(seeds: int = 20) -> None:

@@ -17,9 +17,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).parent))
 from clock import Clock, load  # noqa: E402
 
-from exgen.assignment import Student, load_assignment  # noqa: E402
-from exgen.bank import load_bank  # noqa: E402
-from exgen.generate import default_jobs, generate  # noqa: E402
+from exgen.issue.assignment import Student, load_assignment  # noqa: E402
+from exgen.issue.generate import default_jobs, generate  # noqa: E402
+from exgen.load.bank import load_bank  # noqa: E402
 
 HERE = Path(__file__).parent
 
@@ -43,7 +43,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as out, Clock() as clock:
         generate(assignment, students, bank, b"benchmark secret, not a real one", Path(out) / "set", **options)
     try:
-        from exgen.allocator import faster_allocator  # an option older versions lack
+        from exgen.runtime.allocator import faster_allocator  # an option older versions lack
         workers = faster_allocator() or "the system's malloc"
     except ImportError:
         workers = "the system's malloc"

@@ -19,9 +19,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).parent))
 from clock import Clock, load  # noqa: E402
 
-from exgen.assignment import Student, build_sheet, load_assignment  # noqa: E402
-from exgen.bank import load_bank  # noqa: E402
-from exgen.generate import default_jobs  # noqa: E402
+from exgen.issue.assignment import Student, build_sheet, load_assignment  # noqa: E402
+from exgen.issue.generate import default_jobs  # noqa: E402
+from exgen.load.bank import load_bank  # noqa: E402
 from exgen.render.answer_form import answer_form  # noqa: E402
 from graders.grade import grade_batch  # noqa: E402
 from graders.report import write_results  # noqa: E402

@@ -5,13 +5,13 @@ import shutil
 import sys
 import tempfile
 import time
-from pathlib import Path
-from exgen.bank import load_bank
-from exgen.assignment import load_assignment, Student, build_sheet
+from exgen.issue.assignment import load_assignment, Student, build_sheet
+from exgen.load.bank import load_bank
 from exgen.render.answer_form import answer_form
 from graders.answers import read_submission
 from graders.grade import grade_batch, grade_sheet
 from graders.report import write_results
+from pathlib import Path
 
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 300
 assignment_file = sys.argv[2] if len(sys.argv) > 2 else "tutorial1.yaml"

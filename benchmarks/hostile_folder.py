@@ -36,9 +36,9 @@ def issue(work: Path, env: dict) -> Path:
 
 def real_files(issued: Path, folder: Path, secret: bytes) -> None:
     """Every student's form, answered right (the key's answers), as a learning system names the files."""
-    from exgen.assignment import load_assignment, build_sheet
-    from exgen.bank import load_bank
-    from exgen.manifest import read_manifest
+    from exgen.issue.assignment import load_assignment, build_sheet
+    from exgen.issue.manifest import read_manifest
+    from exgen.load.bank import load_bank
 
     bank = load_bank()
     manifest = read_manifest(issued)

@@ -151,9 +151,9 @@ def main() -> None:
         print("pdflatex is not installed: the LaTeX comparison needs it (Debian: apt-get install "
               "texlive-latex-base texlive-latex-recommended); nothing measured")
         return
-    from exgen.assignment import Student, build_sheet, load_assignment
-    from exgen.bank import load_bank
     from exgen.figures import draw_figures
+    from exgen.issue.assignment import Student, build_sheet, load_assignment
+    from exgen.load.bank import load_bank
     from exgen.render.pdf import key_pdf, sheet_pdf
 
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 5

@@ -17,8 +17,8 @@ from statistics import median
 sys.path.insert(0, str(Path(__file__).parent))
 from clock import allocator, load, median_ms  # noqa: E402
 
-from exgen.assignment import Student, build_sheet, load_assignment  # noqa: E402
-from exgen.bank import load_bank  # noqa: E402
+from exgen.issue.assignment import Student, build_sheet, load_assignment  # noqa: E402
+from exgen.load.bank import load_bank  # noqa: E402
 from exgen.render import pdf  # noqa: E402
 
 HERE = Path(__file__).parent

@@ -21,10 +21,10 @@ from collections import Counter
 from pathlib import Path
 
 from exgen.answertypes import answer_type
-from exgen.assignment import Student, build_sheet, load_assignment
-from exgen.bank import load_bank
-from exgen.generate import generate
-from exgen.manifest import read_manifest
+from exgen.issue.assignment import Student, build_sheet, load_assignment
+from exgen.issue.generate import generate
+from exgen.issue.manifest import read_manifest
+from exgen.load.bank import load_bank
 from graders.copying import signs_of_copying
 from graders.grade import grade_issued
 from graders.mistakes import template_mistake

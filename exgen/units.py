@@ -120,9 +120,9 @@ def _unit_table_rows() -> dict[str, tuple[UnitInfo, str]]:
 
 
 def unit_table(names) -> str:
-    """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.unit_table`)."""
+    """The text of data/unit_table.tsv for these units, each as pint reads it (`python -m exgen.check.unit_table`)."""
     lines = ["# unit, factor to coherent SI, dimension, angles, pint's spelling: pint's answers, stored "
-             "(python -m exgen.unit_table)"]
+             "(python -m exgen.check.unit_table)"]
     for name in sorted(set(names) - {"", "1", "dimensionless"}):
         info = _ask_pint(name)
         lines.append(f"{name}\t{info.factor!r}\t{info.dims}\t{info.angle}\t{_spell_with_pint(name)}")

@@ -14,8 +14,8 @@ from dataclasses import dataclass, field
 from functools import lru_cache, partial
 from pathlib import Path
 
-from exgen.assignment import Student
 from exgen.errors import SubmissionError
+from exgen.issue.assignment import Student
 
 from .answers import Submission, read_submission
 from .echo import shown
@@ -23,7 +23,7 @@ from .formats import SUFFIXES
 from .results import FileProblem
 from .walk import LimitsReached, walk
 
-#: What a student id may look like (it names the feedback file): as exgen.assignment requires.
+#: What a student id may look like (it names the feedback file): as exgen.issue.assignment requires.
 SAFE_ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,63}")
 
 WHOSE_FILE = ("cannot tell whose file this is: its name and folders name no student {of} (name it <id>.yaml, "

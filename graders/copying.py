@@ -14,8 +14,8 @@ from collections import defaultdict
 from typing import Any
 
 from exgen.answertypes import answer_type
-from exgen.assignment import Assignment, build_sheet
 from exgen.errors import ExgenError
+from exgen.issue.assignment import Assignment, build_sheet
 
 from .answers import read_submission
 from .echo import shown

@@ -19,7 +19,7 @@ from pathlib import Path
 import yaml
 
 from exgen.errors import SubmissionError
-from exgen.safefile import UnsafeFile, read_bytes
+from exgen.runtime.safefile import UnsafeFile, read_bytes
 
 from .echo import shown
 

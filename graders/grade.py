@@ -13,13 +13,13 @@ import inspect
 from pathlib import Path
 from typing import Callable, Iterable, Iterator, Mapping
 
-from exgen import parallel
-from exgen.assignment import Assignment, Question, Sheet, Student, build_sheet
-from exgen.roster import load_roster
-from exgen.bank import Bank
 from exgen.errors import ExgenError
-from exgen.manifest import Manifest, ManifestError, issue_mismatches
-from exgen.variant import Variant
+from exgen.issue.assignment import Assignment, Question, Sheet, Student, build_sheet
+from exgen.issue.manifest import Manifest, ManifestError, issue_mismatches
+from exgen.issue.roster import load_roster
+from exgen.load.bank import Bank
+from exgen.runtime import parallel
+from exgen.solve.variant import Variant
 
 from .answers import Submission
 from .echo import shown

@@ -12,11 +12,11 @@ from typing import Any, Mapping
 
 from exgen.answertypes import answer_type
 from exgen.answertypes.base import Given
-from exgen.assignment import Question
-from exgen.derivation import Derivation
 from exgen.errors import ExgenError, FormatProblem, SolverFailure, WrongKind
-from exgen.template import PartSpec
-from exgen.variant import Answer, answer_for, mistakes_for, rerun
+from exgen.issue.assignment import Question
+from exgen.load.template import PartSpec
+from exgen.solve.derivation import Derivation
+from exgen.solve.variant import Answer, answer_for, mistakes_for, rerun
 
 from .mistakes import generic_mistake, template_mistake
 from .why_not import why_not

@@ -12,8 +12,8 @@ from typing import Any, Callable, Iterable, Mapping
 from exgen.answertypes import answer_type
 from exgen.answertypes.base import Given, Mistake
 from exgen.errors import ExgenError
-from exgen.mistake_messages import message_for
-from exgen.template import PartSpec
+from exgen.load.mistake_messages import message_for
+from exgen.load.template import PartSpec
 
 #: (given, expected, widen) -> whether given is expected within the part's tolerance times widen.
 Matcher = Callable[..., bool]

@@ -23,7 +23,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from exgen.errors import SubmissionError
-from exgen.safefile import UnsafeFile, read_bytes
+from exgen.runtime.safefile import UnsafeFile, read_bytes
 
 from .echo import shown
 from .formats import MAX_DEPTH, MAX_ENTRIES, Loaded
@@ -86,7 +86,7 @@ def load_pdf(path: Path, text: str | None = None, deadline: float | None = None)
 
 def read_pdf_bytes(path: Path, deadline: float | None = None) -> bytes:
     """The file's bytes, at most MAX_PDF_BYTES, checked to start as a PDF does; as every answer file, a regular
-    file only, opened without blocking, by the deadline (exgen.safefile)."""
+    file only, opened without blocking, by the deadline (exgen.runtime.safefile)."""
     try:
         raw = read_bytes(path, MAX_PDF_BYTES, deadline, follow_links=False)
     except UnsafeFile as exc:

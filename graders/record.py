@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 from exgen.errors import ExgenError
-from exgen.outdir import recover
+from exgen.runtime.outdir import recover
 
 from .echo import shown
 from .results import BatchResult

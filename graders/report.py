@@ -10,8 +10,8 @@ import re
 from collections import Counter
 from pathlib import Path
 
-from exgen.outdir import check_target, replacing
 from exgen.render.unicode_math import text_to_plain
+from exgen.runtime.outdir import check_target, replacing
 
 from .echo import look_alike, shown, shown_code
 from .results import (BLANK, CARRIED, CORRECT, GRADED, UNREADABLE, WRONG, BatchResult, PartResult,
@@ -28,7 +28,7 @@ NOTES_SHOWN = 10
 COMMON_MISTAKES = 3
 _ENTITY = re.compile(r"&(?=#?\w+;)")  # "&lt;" typed as text would show as "<" in HTML
 _SPREADSHEET_FORMULA = ("=", "+", "-", "@", "\t", "\r")
-KIND = "grade"  # the marker a folder of grading results carries (exgen.outdir)
+KIND = "grade"  # the marker a folder of grading results carries (exgen.runtime.outdir)
 CANVAS_GRADEBOOK, MOODLE_GRADES, PARTS = "canvas_gradebook.csv", "moodle_grades.csv", "parts.csv"
 
 
@@ -36,7 +36,7 @@ def write_results(batch: BatchResult, out_dir: Path, signs=(), canvas_id: str = 
     """gradebook.csv, the Canvas and Moodle gradebooks, parts.csv, feedback/<student>.md, report.md,
     results.json and the item analysis (HTML and Markdown) under `out_dir`; returns their paths. `signs`
     are the signs of copying found (graders.copying), reported and never marked. The folder is replaced
-    whole when everything is written (exgen.outdir): never a new gradebook beside old feedback."""
+    whole when everything is written (exgen.runtime.outdir): never a new gradebook beside old feedback."""
     from .gradebooks import write_canvas_gradebook, write_moodle_grades, write_parts
     from .item_report import HTML, MARKDOWN, report_pages
     from .record import RESULTS, batch_record, write_record

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
-from exgen.assignment import Assignment, Student
+from exgen.issue.assignment import Assignment, Student
 
 # Part statuses. A format problem ("unreadable") is kept apart from a wrong answer.
 CORRECT = "correct"

@@ -18,8 +18,8 @@ from pathlib import Path
 from typing import Callable
 
 from exgen.errors import ExgenError
-from exgen.outdir import MARKER
-from exgen.safefile import kind_of
+from exgen.runtime.outdir import MARKER
+from exgen.runtime.safefile import kind_of
 
 from .echo import shown
 from .formats import SUFFIXES, file_kind

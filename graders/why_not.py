@@ -17,10 +17,10 @@ from exgen import units
 from exgen.answertypes.angle import angle
 from exgen.answertypes.number import PREFIXES, REL_TOL
 from exgen.answertypes.quantity import units_of_kind
-from exgen.derivation import PLACEHOLDER
 from exgen.errors import ExgenError
 from exgen.render.formula import FormulaError, parse, written
 from exgen.render.targets import PLAIN
+from exgen.solve.derivation import PLACEHOLDER
 
 ON_THE_WAY = "Your value is {step}, a step on the way: {target} is worked out from it{more}."
 OTHER_PART = "Your value is {step}, the answer to ({part}), not to this part."

@@ -14,15 +14,15 @@ import threading
 from functools import lru_cache
 from pathlib import Path
 
-from exgen.interrupts import held
-from exgen.parallel import watch_parent
-from exgen.seeds import practice_seed
-from exgen.template import Template
+from exgen.draw.seeds import practice_seed
+from exgen.load.template import Template
+from exgen.runtime.interrupts import held
+from exgen.runtime.parallel import watch_parent
 
 
 @lru_cache(maxsize=512)
 def _template(path: str) -> Template:
-    from exgen.bank import load_template
+    from exgen.load.bank import load_template
 
     return load_template(Path(path))
 
@@ -30,7 +30,7 @@ def _template(path: str) -> Template:
 def draw_figure(path: str, seed: int) -> str | None:
     """In the other process: the figure of the template's variant for this seed."""
     from exgen.figures import figure_svg
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     return figure_svg(make_variant(_template(path), seed))
 

@@ -16,9 +16,9 @@ import re
 from dataclasses import dataclass
 
 from exgen.answertypes import answer_type
-from exgen.derivation import PLACEHOLDER
 from exgen.render.solution import Filled, Number, WorkLine, solution
 from exgen.render.targets import PLAIN, number_parts
+from exgen.solve.derivation import PLACEHOLDER
 
 #: A number as plain text writes it: "0.1991", "−3.5", "2.4×10⁻³".
 _NUMBER = re.compile(r"([-\u2212]?\d+(?:\.\d+)?)(?:\s*\u00d7\s*10([\u207a\u207b]?[\u2070\u00b9\u00b2\u00b3\u2074-\u2079]+))?")

@@ -10,7 +10,7 @@ from importlib import resources
 import yaml
 
 from exgen.errors import ExgenError
-from exgen.template import Template
+from exgen.load.template import Template
 
 UNKNOWN_TOPIC = "{what!r} is neither a topic nor a template{within}; the topics are {topics}"
 UNKNOWN_CHAPTER = "chapter {number} has no templates{within} (chapters with templates: {chapters})"

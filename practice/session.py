@@ -3,7 +3,7 @@ an answer file (same reading, tolerances, named mistakes and error carried forwa
 solution, and every step kept in the progress file. The terminal and the browser both drive this.
 
 A problem is (template, seed) like any sheet's question, so it is rebuilt, not stored: its seed comes
-from the practice range (exgen.seeds.PRACTICE_SEEDS), never one a sheet can have, and a variant whose
+from the practice range (exgen.draw.seeds.PRACTICE_SEEDS), never one a sheet can have, and a variant whose
 printed values the student has already met is never served again.
 """
 from __future__ import annotations
@@ -18,13 +18,13 @@ from graders.grade import grade_variant
 from graders.marking import is_blank
 from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult
 
+from exgen.draw.seeds import PRACTICE_SEEDS, practice_seed
 from exgen.errors import ExgenError
 from exgen.figures import figure_svg, key_figure_svgs
-from exgen.references import resolve
+from exgen.load.references import resolve
+from exgen.load.template import Template
 from exgen.render.solution import Solution, solution
-from exgen.seeds import PRACTICE_SEEDS, practice_seed
-from exgen.template import Template
-from exgen.variant import Variant, make_variant
+from exgen.solve.variant import Variant, make_variant
 
 from . import mastery
 from .hints import Hint, hint_ladder

@@ -63,8 +63,8 @@ class _Name(str):
 def reads(bank, ref: str, template_ids: list[str], seeds=(1, 2)) -> tuple[list[str], list[str]]:
     """The givens and the solver steps a figure looks up by name, drawn for the templates that name it:
     each variant's names are made to note being looked up, and the figure drawn from it."""
-    from exgen.references import resolve
-    from exgen.variant import make_variant
+    from exgen.load.references import resolve
+    from exgen.solve.variant import make_variant
 
     figure = resolve(ref, "figures")
     givens, steps = [], []
@@ -187,7 +187,7 @@ def mistake_sections() -> list[tuple[str, list[str]]]:
 
 
 def mistakes_catalogue(bank) -> str:
-    from exgen.mistake_messages import default_messages
+    from exgen.load.mistake_messages import default_messages
 
     texts = default_messages()
     naming: dict[str, dict[str, list[str]]] = {}
@@ -276,7 +276,7 @@ def pages(bank) -> dict[Path, str]:
 
 
 if __name__ == "__main__":
-    from exgen.bank import load_bank
+    from exgen.load.bank import load_bank
 
     for path, text in pages(load_bank()).items():
         if path.read_text(encoding="utf-8") != text:

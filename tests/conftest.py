@@ -1,6 +1,6 @@
 import pytest
 
-from exgen.bank import load_bank
+from exgen.load.bank import load_bank
 
 #: The tests that hold the keys' numbers themselves (the golden draws, each answer and named mistake worked out
 #: again from the printed givens, physics reached from the solvers, crashes reported): quick, and run first, so

@@ -10,9 +10,9 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-from exgen.bank import load_bank
 from exgen.export.filters import number
 from exgen.export.pool import build_pool
+from exgen.load.bank import load_bank
 
 SCHEMAS = Path(__file__).parent / "schemas" / "qti21-catalog"
 SECRET = b"0123456789abcdef-export-tests-secret"

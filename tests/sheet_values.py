@@ -12,7 +12,7 @@ from types import SimpleNamespace
 
 import pytest
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 #: SI value of one of each unit a template gives or asks in.
 TO_SI = {

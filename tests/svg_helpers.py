@@ -3,9 +3,9 @@ import dataclasses
 import xml.etree.ElementTree as ET
 from decimal import Decimal
 
-from exgen.draw import derived_value
+from exgen.draw.values import derived_value
 from exgen.figures import checks
-from exgen.variant import build_variant, make_variant
+from exgen.solve.variant import build_variant, make_variant
 
 SVG = "{http://www.w3.org/2000/svg}"
 

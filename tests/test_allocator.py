@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from exgen import allocator, parallel
-from exgen.allocator import PRELOAD, SETTING, faster_allocator, preloaded
+from exgen.runtime import allocator, parallel
+from exgen.runtime.allocator import PRELOAD, SETTING, faster_allocator, preloaded
 
 
 @pytest.fixture(autouse=True)

@@ -6,7 +6,7 @@ import unicodedata
 import pytest
 
 from exgen.echo import _DROPPED
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 
 HIDDEN = ["\u202e", "\u2066", "\u200f", "\u200b", "\x1b", "\u2028", "\ufeff", "\x07"]

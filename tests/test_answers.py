@@ -4,8 +4,8 @@ import json
 import pytest
 import yaml
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.errors import SubmissionError
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.answer_form import answer_form
 from graders.answers import read_submission
 

@@ -8,9 +8,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from exgen.answertypes import answer_type, names, read, registry
-from exgen.bank import load_template
 from exgen.errors import BankError, FormatProblem, WrongKind
-from exgen.template import PartSpec, Tolerance
+from exgen.load.bank import load_template
+from exgen.load.template import PartSpec, Tolerance
 
 KINDS = sorted(registry())
 

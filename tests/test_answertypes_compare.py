@@ -8,7 +8,7 @@ from exgen.answertypes.angle import angle
 from exgen.answertypes.choice import choice
 from exgen.answertypes.integer import integer
 from exgen.answertypes.number import numeric
-from exgen.template import PartSpec, Tolerance
+from exgen.load.template import PartSpec, Tolerance
 
 
 @pytest.mark.parametrize("given, expected, kwargs, ok", [

@@ -7,7 +7,7 @@ import pytest
 from exgen.answertypes import answer_type, registry
 from exgen.answertypes.lms import NoLmsForm, wrong_numbers
 from exgen.answertypes.polar import Polar
-from exgen.template import PartSpec, Tolerance
+from exgen.load.template import PartSpec, Tolerance
 
 SAMPLE_VALUES = {"number": 12.5, "angle": 218.0, "integer": 4, "choice": "increase", "polar": Polar(1.5, 30.0)}
 

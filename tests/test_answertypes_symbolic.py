@@ -15,15 +15,15 @@ import pytest
 
 from exgen.answertypes import answer_type, read
 from exgen.answertypes.expressions import MAX_LENGTH, Expression, ExpressionError
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from exgen.bank import load_bank, load_template
+from exgen.check.validate import validate_template
 from exgen.errors import BankError, FormatProblem
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.load.bank import load_bank, load_template
 from exgen.render.answer_form import answer_form
 from exgen.render.markdown import key_markdown, sheet_markdown
 from exgen.render.pdf import key_pdf
 from exgen.render.text import variant_text
-from exgen.validate import validate_template
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.answers import read_submission
 from graders.grade import grade_batch, grade_variant
 from graders.report import write_results

@@ -5,7 +5,7 @@ import pytest
 
 from exgen.answertypes import answer_type
 from exgen.errors import FormatProblem, WrongKind
-from exgen.template import PartSpec
+from exgen.load.template import PartSpec
 
 
 def part(unit: str) -> PartSpec:

@@ -3,8 +3,8 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import load_assignment
 from exgen.errors import AssignmentError
+from exgen.issue.assignment import load_assignment
 
 
 def write(tmp_path: Path, questions: str) -> Path:

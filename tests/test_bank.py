@@ -3,8 +3,8 @@ from pathlib import Path
 
 import pytest
 
-from exgen.bank import _load_bank, load_template
 from exgen.errors import BankError, UnknownTemplate
+from exgen.load.bank import _load_bank, load_template
 
 GOOD = """\
 id: demo.good
@@ -71,7 +71,7 @@ def test_each_problem_names_file_line_column_and_key_as_an_author_reads_it(tmp_p
 
 
 def test_hints_are_kept_in_order_and_filled_with_the_variants_values(tmp_path):
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     text = GOOD.replace("answer: N2_slip, unit: rpm}",
                         "answer: N2_slip, unit: rpm, hints: ['The ratio is $d_1/d_2$.', 'Start from {{ N1 }}.']}")
@@ -128,7 +128,7 @@ def test_a_light_load_leaves_code_and_texts_to_the_full_check_and_to_first_use(t
     """`exgen list` and `show` load the bank without importing solvers or parsing texts: a wrong function
     or name passes the light load, fails the full one (validate, generate, grade), and is named when used."""
     from exgen.errors import ExgenError, TemplateError
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     path = write(tmp_path, GOOD.replace("{{ d1 }}.", "{{ d3 }}."))
     assert any("unknown parameter(s): d3" in p for p in problems(path))

@@ -8,15 +8,15 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from exgen.bank import load_bank, load_template, refuse_code_in
+from exgen.check.validate import validate_template
 from exgen.cli import main
 from exgen.errors import BankError, ExgenError
 from exgen.figures import figure_svg
-from exgen.manifest import read_manifest, template_mismatches
-from exgen.validate import validate_template
-from exgen.variant import make_variant
-from exgen.versions import template_version
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.manifest import read_manifest, template_mismatches
+from exgen.load.bank import load_bank, load_template, refuse_code_in
+from exgen.load.versions import template_version
+from exgen.solve.variant import make_variant
 
 SECRET = b"a course secret used only by these tests"
 
@@ -133,7 +133,7 @@ def test_the_version_covers_the_banks_solver_and_what_it_imports(tmp_path):
     template = load_template(course(tmp_path / "course"))
     version = template_version(template)
     assert "bank:course/speeds.py" in version.code
-    assert {"exgen/mechanics/belts.py", "exgen/variant.py", "graders/marking.py"} <= set(version.code)
+    assert {"exgen/mechanics/belts.py", "exgen/solve/variant.py", "graders/marking.py"} <= set(version.code)
     # a comment or a docstring changes nothing; a number does
     source = tmp_path / "course" / "speeds.py"
     source.write_text(SOLVER.replace('"""The course', '# reviewed\n"""The course'), encoding="utf-8")

@@ -30,9 +30,9 @@ def test_show_is_reproducible_by_seed(capsys):
 
 def test_show_writes_the_figures_to_look_at(tmp_path, capsys):
     """A template author had no way to see a figure short of issuing an assignment."""
-    from exgen.bank import load_bank
     from exgen.figures import figure_svg, key_figure_svgs
-    from exgen.variant import make_variant
+    from exgen.load.bank import load_bank
+    from exgen.solve.variant import make_variant
 
     assert main(["show", "balancing.static_balance", "--seed", "3", "--key", "--figures", str(tmp_path)]) == 0
     variant = make_variant(load_bank().get("balancing.static_balance"), 3)

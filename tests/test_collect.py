@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 import graders.walk
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.errors import SubmissionError
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from graders.answers import read_submission
 from graders.grade import grade_batch
 from graders.report import write_results
@@ -128,7 +128,7 @@ def _refusal(path: Path) -> str:
 
 
 def _unsafe(path: Path) -> str:
-    from exgen.safefile import UnsafeFile, read_bytes
+    from exgen.runtime.safefile import UnsafeFile, read_bytes
 
     try:
         read_bytes(path, 1024)

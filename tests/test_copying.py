@@ -3,7 +3,7 @@ copied is typed to four figures or so, so it lies within a fifth of the part's t
 wrong answer further off is near someone's key by chance and is no evidence."""
 import pytest
 
-from exgen.template import PartSpec, Tolerance
+from exgen.load.template import PartSpec, Tolerance
 from graders.copying import _other_variant
 
 FORCE = PartSpec("a", "the force", "F", unit="N", tol=Tolerance(rel=0.01))  # graded to 1 %

@@ -1,9 +1,9 @@
 import pytest
 
-from exgen.derivation import Derivation, Params
-from exgen.template import default_symbol
 from exgen.errors import InvalidDraw
-from exgen.variant import answer_for, rerun
+from exgen.load.template import default_symbol
+from exgen.solve.derivation import Derivation, Params
+from exgen.solve.variant import answer_for, rerun
 
 
 @pytest.mark.parametrize("name, symbol", [
@@ -40,7 +40,7 @@ def test_require_rejects_or_warns():
 
 
 def test_rerun_carries_an_earlier_answer_forward(bank):
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     variant = make_variant(bank.get("belts.flat_belt_power"), 7)
     part_c = variant.template.part("c")

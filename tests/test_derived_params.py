@@ -5,10 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from exgen.bank import load_template
-from exgen.draw import draw_values, generator
+from exgen.check.given import solve
+from exgen.draw.values import draw_values, generator
 from exgen.errors import BankError, ExgenError
-from exgen.solve import solve
+from exgen.load.bank import load_template
 
 TEMPLATE = """\
 id: demo.derived

@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from exgen.bank import load_template
 from exgen.cli import main
-from exgen.domains import ANY, NOT_NEGATIVE, PERCENTAGE, POSITIVE, Domain, domain_of, parse_domain
 from exgen.errors import BankError
+from exgen.load.bank import load_template
+from exgen.load.domains import ANY, NOT_NEGATIVE, PERCENTAGE, POSITIVE, Domain, domain_of, parse_domain
 
 GEAR_PAIR = ["solve", "gears.gear_pair_power", "--set", "m=4mm", "--set", "t1=20", "--set", "t2=60",
              "--set", "tau1=100N*m", "--set", "N1=1000rpm"]

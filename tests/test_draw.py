@@ -6,15 +6,15 @@ from decimal import Decimal
 import numpy as np
 import pytest
 
-from exgen.draw import draw_values, generator, uniform_index
+from exgen.draw.values import draw_values, generator, uniform_index
 from exgen.errors import DrawError
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 
 def test_same_seed_same_variant_across_processes(bank):
     template = bank.get("belts.flat_belt_power")
     here = {p.name: p.text for p in make_variant(template, 2024).params}
-    code = ("from exgen.bank import load_bank; from exgen.variant import make_variant;"
+    code = ("from exgen.load.bank import load_bank; from exgen.solve.variant import make_variant;"
             "v = make_variant(load_bank().get('belts.flat_belt_power'), 2024);"
             "print({p.name: p.text for p in v.params})")
     there = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout

@@ -15,15 +15,15 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from exgen.bank import load_bank
+from exgen.check.given import solve
+from exgen.check.validate import check_variant, validate_template
 from exgen.cli import main
 from exgen.figures import figure_svg
 from exgen.figures.checks import collisions, texts
 from exgen.figures.svg import MAX_WIDTH
+from exgen.load.bank import load_bank
 from exgen.render.solution import line_value, reproduces, solution
-from exgen.solve import solve
-from exgen.validate import check_variant, validate_template
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from sheet_values import check_answers, check_mistakes, printed
 
 FOLDER = Path(__file__).parent.parent / "examples" / "bank"
@@ -129,7 +129,7 @@ def test_the_figure_is_drawn_to_the_data_with_its_labels_clear(folder_bank):
 def test_a_class_is_issued_from_the_folder_and_graded(tmp_path, folder_bank, capsys):
     """Two students, PDFs made by two processes (each imports the folder's solver file itself); one hands back
     the key's answers, the other the undamped frequency for (e): full marks, and the slip named."""
-    from exgen.assignment import Student, build_sheet, load_assignment
+    from exgen.issue.assignment import Student, build_sheet, load_assignment
     from exgen.render.answer_form import answer_form
 
     (tmp_path / "hw6.yaml").write_text("assignment: hw6-damping\ntitle: Damped torsional vibration\n"

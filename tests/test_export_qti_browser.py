@@ -42,8 +42,8 @@ def _as_xhtml(item_xml: bytes) -> bytes:
 
 
 def test_an_items_formulas_are_laid_out_as_mathml(tmp_path):
-    from exgen.bank import load_bank
     from exgen.export.pool import build_pool
+    from exgen.load.bank import load_bank
 
     template = load_bank().get("belts.flat_belt_power")
     files = qti_files(build_pool("Belts", "pool", [("q1", template, template.points)], SECRET, 1))

@@ -2,7 +2,7 @@ import math
 
 import pytest
 
-from exgen.expr import ExpressionError, evaluate, names_in, parse
+from exgen.load.expr import ExpressionError, evaluate, names_in, parse
 
 
 @pytest.mark.parametrize("text, names, expected", [

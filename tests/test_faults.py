@@ -108,9 +108,9 @@ def test_a_kill_at_the_swap_itself_is_recovered_by_a_rerun_or_a_reader(bank, tmp
     """The swap renamed the old output away, then the new one into place: a kill between the two left no
     output at all. Where the system exchanges folders in one step there is no such instant; elsewhere a
     reader, or a rerun, puts the old output back."""
-    from exgen.assignment import Student, load_assignment
-    from exgen.generate import generate
-    from exgen.manifest import read_manifest
+    from exgen.issue.assignment import Student, load_assignment
+    from exgen.issue.generate import generate
+    from exgen.issue.manifest import read_manifest
 
     tutorial = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
     made = {}
@@ -122,7 +122,7 @@ def test_a_kill_at_the_swap_itself_is_recovered_by_a_rerun_or_a_reader(bank, tmp
     die = "lambda *a, **k: os.kill(os.getpid(), signal.SIGKILL)"
     patch = {"between the two renames": f"outdir._exchange = lambda a, b: False\noutdir._put_in_place = {die}",
              "after the exchange": f"outdir.shutil = type('S', (), {{'rmtree': staticmethod({die})}})"}[instant]
-    swap = (f"import os, shutil, signal\nfrom exgen import outdir\n{patch}\n"
+    swap = (f"import os, shutil, signal\nfrom exgen.runtime import outdir\n{patch}\n"
             f"with outdir.replacing(__import__('pathlib').Path({str(out)!r}), 'generate') as folder:\n"
             f"    shutil.copytree({str(tmp_path / 'B')!r}, folder, dirs_exist_ok=True)\n")
     killed = faults.start([], tmp_path / "killed.log", patches=swap + "sys.exit(0)")

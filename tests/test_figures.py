@@ -12,8 +12,8 @@ from exgen.figures.belts import belt_drive, compound_drive
 from exgen.figures.metrics import FAMILY
 from exgen.figures.svg import num, subscripted
 from exgen.figures.tangents import belt_loop
-from exgen.template import ParamSpec
-from exgen.variant import make_variant
+from exgen.load.template import ParamSpec
+from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
 
 DRIVE = ParamSpec("drive", label="belt arrangement", choices=("open", "crossed"))

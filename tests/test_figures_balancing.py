@@ -7,7 +7,7 @@ import pytest
 
 from exgen import units
 from exgen.figures import figure_svg
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from svg_helpers import SVG, elements, root, texts, variant_of
 
 UP_CLOCKWISE = (-90.0, 1)          # 0° straight up, angles growing clockwise on the page

@@ -8,7 +8,7 @@ import pytest
 
 from exgen.figures import figure_svg, key_figure_svgs
 from exgen.figures.gyro_vehicles import AXES, WORDS
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, elements, root, texts, variant_of
 
 

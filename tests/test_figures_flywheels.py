@@ -6,7 +6,7 @@ import pytest
 from exgen.figures import figure_svg
 from exgen.figures.flywheels import loop_diagram, torque_time
 from exgen.figures.svg import text_box
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from svg_helpers import elements, root, texts, variant_of
 
 SVG = "{http://www.w3.org/2000/svg}"

@@ -7,7 +7,7 @@ import pytest
 from exgen import units
 from exgen.figures import figure_svg
 from exgen.figures import gear_trains, gears, hoists
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
 
 GEAR_FIGURES = ["gears.pitch_geometry", "gears.teeth_for_centre_distance", "gears.gear_pair_power",

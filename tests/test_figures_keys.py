@@ -4,12 +4,12 @@ import math
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.errors import BankError
 from exgen.figures import key_figure_svgs
 from exgen.figures.polygons import FROM_REFERENCE, FROM_VERTICAL
-from exgen.generate import write_student
-from exgen.variant import make_variant
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.generate import write_student
+from exgen.solve.variant import make_variant
 from svg_helpers import elements, texts
 
 POLYGONS = {  # template: (convention, [(closing step's size, factor, angle) per polygon, left to right])
@@ -117,7 +117,7 @@ def test_the_key_pdf_embeds_the_key_figures(bank):
 def test_bad_key_figures_are_reported_with_file_and_key(bank, tmp_path, value, message):
     import yaml
 
-    from exgen.bank import load_template
+    from exgen.load.bank import load_template
 
     data = yaml.safe_load(bank.get("balancing.static_balance").path.read_text(encoding="utf-8"))
     data["key_figures"] = value

@@ -3,10 +3,10 @@ import math
 
 import pytest
 
-from exgen.figures.linkages import coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction
 from exgen.figures.linkage_poses import joints
+from exgen.figures.linkages import coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction
 from exgen.figures.mechanisms import kinematic_diagram
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
 
 

@@ -12,7 +12,7 @@ from exgen.figures.checks import collisions, labels
 from exgen.figures.layout import TextBox, boxes_overlap, circle_hits, path_points, runs, segment_hits, text_box
 from exgen.figures.metrics import FAMILY, TABLE, build_table, covered, measure
 from exgen.figures.svg import MAX_WIDTH, PT_PER_PX
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 #: Seeds per template; EXGEN_FIGURE_SEEDS=150 checks more by hand.
 SEEDS = range(int(os.environ.get("EXGEN_FIGURE_SEEDS", "40")))
@@ -110,7 +110,7 @@ def test_arcs_in_paths_are_followed():
 
 
 def test_pdfs_use_one_family_for_text_and_figures(bank, tmp_path):
-    from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+    from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
     from exgen.render.pdf import key_pdf, sheet_pdf
 
     ids = [t.id for t in bank if t.figure or t.key_figures]  # every figure, and every statement with one

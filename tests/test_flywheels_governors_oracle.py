@@ -16,7 +16,7 @@ from decimal import Decimal
 
 import pytest
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 import sheet_values
 from sheet_values import G

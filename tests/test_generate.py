@@ -4,11 +4,11 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import load_assignment
-from exgen.roster import load_roster
-from exgen.generate import generate
-from exgen.seeds import derive_seed
-from exgen.versions import template_version
+from exgen.draw.seeds import derive_seed
+from exgen.issue.assignment import load_assignment
+from exgen.issue.generate import generate
+from exgen.issue.roster import load_roster
+from exgen.load.versions import template_version
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 SECRET = b"a course secret used only by these tests"
@@ -72,7 +72,7 @@ def test_keys_grade_themselves_at_full_marks(issued, bank, tmp_path):
 
     first, _, students = issued
     assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
-    from exgen.assignment import build_sheet
+    from exgen.issue.assignment import build_sheet
     from exgen.render.answer_form import answer_form
 
     for student in students:
@@ -112,12 +112,12 @@ def test_parallel_generate_leaves_no_process_behind(bank, tmp_path):
 
 
 def test_markdown_only_starts_no_process_and_keys_can_skip_their_pdf(bank, tmp_path, monkeypatch):
-    import exgen.parallel
+    import exgen.runtime.parallel
 
     def refuse(*args, **kwargs):
         raise AssertionError("Markdown alone needs no worker process")
 
-    monkeypatch.setattr(exgen.parallel, "pool", refuse)
+    monkeypatch.setattr(exgen.runtime.parallel, "pool", refuse)
     assignment = load_assignment(EXAMPLES / "tutorial1.yaml", bank)
     students = load_roster(EXAMPLES / "roster.csv")[:2]
     generate(assignment, students, bank, SECRET, tmp_path / "md", pdf=False, jobs=4)

@@ -1,12 +1,12 @@
 """A key lists the givens its variant uses, and only those: one idler drawn, no second idler's teeth."""
 import pytest
 
-from exgen.bank import load_bank
 from exgen.errors import InvalidDraw, SolverFailure
 from exgen.figures import figure_svg
+from exgen.load.bank import load_bank
 from exgen.render.solution import solution
 from exgen.render.text import variant_text
-from exgen.variant import build_variant, make_variant
+from exgen.solve.variant import build_variant, make_variant
 
 TEMPLATE_IDS = sorted(t.id for t in load_bank())
 

@@ -8,12 +8,12 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import Student, load_assignment
-from exgen.roster import load_roster
-from exgen.bank import Bank, load_template
 from exgen.cli import main
-from exgen.generate import generate
-from exgen.manifest import ManifestError, read_manifest
+from exgen.issue.assignment import Student, load_assignment
+from exgen.issue.generate import generate
+from exgen.issue.manifest import ManifestError, read_manifest
+from exgen.issue.roster import load_roster
+from exgen.load.bank import Bank, load_template
 from graders.grade import grade_issued
 from graders.results import GRADED, NO_SUBMISSION, PROBLEM_FILE
 
@@ -34,10 +34,10 @@ def issued(tmp_path_factory, bank):
 
 def keyed(issued: Path, student: str) -> str:
     """The student's answer form with every answer from their key typed in (the key grades 100 %)."""
-    from exgen.assignment import build_sheet
+    from exgen.issue.assignment import build_sheet
     from exgen.render.answer_form import answer_form
 
-    bank = __import__("exgen.bank", fromlist=["load_bank"]).load_bank()
+    bank = __import__("exgen.load.bank", fromlist=["load_bank"]).load_bank()
     manifest = read_manifest(issued)
     sheet = build_sheet(manifest.assignment, next(s for s in manifest.students if s.id == student), bank,
                         SECRET.encode())

@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from exgen.bank import load_bank
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.load.bank import load_bank
 from graders.grade import grade_batch
 from graders.report import write_results
 from graders.results import GRADED

@@ -5,7 +5,7 @@ import os
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.answer_form import answer_form
 from graders.grade import grade_batch
 from graders.report import write_results

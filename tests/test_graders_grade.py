@@ -6,11 +6,11 @@ import math
 import pytest
 
 from exgen import units
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from exgen.template import PartSpec
-from exgen.variant import answer_for, make_variant, rerun
-from exgen.mistake_messages import default_messages
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.load.mistake_messages import default_messages
+from exgen.load.template import PartSpec
 from exgen.render.answer_form import answer_form
+from exgen.solve.variant import answer_for, make_variant, rerun
 from graders.answers import Submission, read_submission
 from graders.grade import grade_sheet, grade_variant
 from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG

@@ -5,9 +5,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from exgen.variant import make_variant
-from graders.grade import grade_variant
 from exgen.answertypes.quantity import read_quantity
+from exgen.solve.variant import make_variant
+from graders.grade import grade_variant
 from graders.results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG
 
 MARKER = "/tmp/exgen-grader-was-evaluated"

@@ -3,7 +3,7 @@ import pytest
 
 from exgen.answertypes import read
 from exgen.answertypes.choice import choice, choice_aliases
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 from graders.mistakes import generic_mistake
 

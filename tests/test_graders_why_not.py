@@ -5,9 +5,9 @@ import math
 import pytest
 
 from exgen.answertypes import answer_type
-from exgen.bank import load_bank
+from exgen.load.bank import load_bank
 from exgen.render.targets import PLAIN
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders import marking
 from graders.grade import grade_variant
 from graders.results import WRONG

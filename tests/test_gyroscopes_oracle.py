@@ -13,7 +13,7 @@ import math
 
 import pytest
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 SEEDS = range(150)
 X, Y, Z = (1, 0, 0), (0, 1, 0), (0, 0, 1)
@@ -128,7 +128,7 @@ def test_two_wheeler_couple_overturns_outwards_as_the_working_says(bank, templat
 
 
 def test_a_heel_given_with_the_engine_outweighing_the_wheels_is_flagged(bank):
-    from exgen.solve import solve
+    from exgen.check.given import solve
 
     variant, warnings = solve(bank.get("gyroscopes.motorcycle_heel"), {
         "I_w": "0.5 kg*m^2", "I_e": "0.39 kg*m^2", "G": "6", "engine": "opposite", "d_w": "0.69 m",

@@ -6,8 +6,8 @@ import json
 import pytest
 
 import hostile
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.errors import SubmissionError
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from graders.answers import read_submission
 from graders.grade import grade_batch
 from graders.report import write_results

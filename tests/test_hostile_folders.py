@@ -5,7 +5,7 @@ import os
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from graders.results import GRADED
 from hostile_folders import hostile_folder
 from test_collect import graded_in_time

@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import Student, load_assignment
 from exgen.cli import main
-from exgen.generate import generate
+from exgen.issue.assignment import Student, load_assignment
+from exgen.issue.generate import generate
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 SECRET = "9c2e4a6f8b0d1e3f5a7c9b1d3f5e7a9c0b2d4f6e8a0c2e4f"

@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import load_assignment
-from exgen.bank import _load_bank, load_template
 from exgen.errors import AssignmentError, BankError
+from exgen.issue.assignment import load_assignment
+from exgen.load.bank import _load_bank, load_template
 
 BILLION_LAUGHS = "".join(f"{a}: &{a} [{', '.join(['*' + p] * 9 if p else ['lol'] * 9)}]\n"
                          for a, p in zip("abcdefghi", ["", *"abcdefgh"]))

@@ -6,7 +6,7 @@ import signal
 
 import pytest
 
-from exgen.interrupts import Terminated, handled, held
+from exgen.runtime.interrupts import Terminated, handled, held
 
 
 def test_sigterm_raises_terminated_and_sigint_keyboard_interrupt():

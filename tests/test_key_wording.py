@@ -2,7 +2,7 @@
 import pytest
 
 from exgen.render.solution import solution
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 SEEDS = range(12)
 
@@ -96,7 +96,7 @@ def test_the_formula_question_s_figure_says_what_it_shows(bank):
 def test_a_period_taken_as_one_over_omega_is_named_as_that(bank):
     """A periodic time worked as 1/ω was told 'That is the circular frequency ω in rad/s': the answer is in
     seconds, and the slip is the 2π of a cycle left out of T = 2π/ω."""
-    from exgen.mistake_messages import default_messages
+    from exgen.load.mistake_messages import default_messages
 
     for template in bank:
         for part in template.parts:
@@ -109,7 +109,7 @@ def test_a_period_taken_as_one_over_omega_is_named_as_that(bank):
 def test_feedback_on_a_percentage_change_speaks_of_the_change(bank):
     """The idler's change in power per belt, worked upside down, was told about pulleys' speeds
     ('For pulleys N₂/N₁ = d₁/d₂'): a percentage part names the ratio it is about."""
-    from exgen.mistake_messages import default_messages
+    from exgen.load.mistake_messages import default_messages
 
     for template in bank:
         for part in template.parts:
@@ -159,7 +159,7 @@ def test_a_table_hides_no_line_whose_working_it_lacks(bank):
     """A table that lists a step's value spares the step its own line only where the table shows how it is
     made (m·r beside m and r): a car wheel's share of the weight, W(b − a)/2b, appeared only as a number in
     the reactions table, worked nowhere."""
-    from exgen.derivation import Table
+    from exgen.solve.derivation import Table
 
     needs_its_line = {"gyroscopes.car_wheel_reactions": ("W_f", "W_r"),
                       "balancing.bearing_reactions": ("RY", "theta_RY")}

@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import re
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 SEEDS = range(60)
 TOKEN = re.compile(r"\s*(@[A-Za-z_][A-Za-z0-9_]*|\d+(?:\.\d+)?\^\{?\\circ\}?|\d+(?:\.\d+)?|\\left\(|\\right\)|[-+()])")

@@ -36,7 +36,7 @@ def test_the_wrong_way_for_the_spring_load_is_explained(bank):
 def test_a_flywheel_rim_is_thin_beside_its_radius(bank):
     """I = m R² takes the rim's mass at its mean radius: a section as thick as the radius is a disc, not a rim
     (Problem 3.1's is 67 mm thick on a 325 mm radius)."""
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     template = bank.get("flywheels.flywheel_rim")
     for seed in range(120):
@@ -60,7 +60,7 @@ DIFFERENCES = [
 def test_a_difference_worked_from_answers_kept_to_four_figures_is_right(bank):
     """The sheet asks for four significant figures; a student who works a sensitivity or a range of speed from
     the speeds as they wrote them down (as the text's Example 4.1 does) has worked it right."""
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
     from graders.grade import grade_variant
 
     for template_id, part, worked in DIFFERENCES:
@@ -74,7 +74,7 @@ def test_a_difference_worked_from_answers_kept_to_four_figures_is_right(bank):
 
 
 def test_statements_read_right_for_every_draw(bank):
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     for seed in range(60):
         engine = make_variant(bank.get("flywheels.energy_coefficient"), seed).statement
@@ -124,7 +124,7 @@ def test_the_crossings_of_greatest_and_least_speed_read_as_a_sentence(bank):
 def test_the_proell_figure_names_the_points_the_statement_names(bank):
     """The statement speaks of the extension AB, the cranked lever ABC and the upper arm BD: the figure marks them."""
     from exgen.figures import figure_svg
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
     from svg_helpers import texts
 
     for seed in range(5):
@@ -144,7 +144,7 @@ def test_a_negative_acceleration_is_said_to_slow_the_flywheel(bank):
 
 def test_the_change_of_spring_load_is_asked_as_a_size(bank):
     """Part (d) asks which way: part (c) asks the size, so that a signed −737.5 N is a sign slip, said as one."""
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     assert "size" in make_variant(bank.get("governors.spring_controlled"), 0).asks["c"]
 
@@ -152,7 +152,7 @@ def test_the_change_of_spring_load_is_asked_as_a_size(bank):
 def test_a_second_hartnell_spring_is_a_spring(bank):
     """Example 4.3's spring 2 is 1158 kN/m, stiff because the sleeve's first few millimetres stretch it; the
     drawn ones stay within about three times that, not a solid bar of 16 MN/m."""
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     template = bank.get("governors.hartnell_two_springs")
     for seed in range(150):

@@ -18,13 +18,13 @@ import pytest
 from lxml import etree
 
 from exgen.answertypes.polar import Polar
-from exgen.assignment import Question
 from exgen.export.canvas import canvas_files, groups
 from exgen.export.filters import number
 from exgen.export.html import LATEX_HTML, MATHML_XHTML
 from exgen.export.moodle import PLUGINFILE, moodle_xml
 from exgen.export.pool import make_item
 from exgen.export.qti import IMAGES, gap_refs, qti_files
+from exgen.issue.assignment import Question
 from graders.marking import QuestionMarker
 from graders.results import CORRECT
 

@@ -5,13 +5,13 @@ import xml.etree.ElementTree as ElementTree
 
 import pytest
 
-from exgen.assignment import Question
-from exgen.bank import load_bank
+from exgen.issue.assignment import Question
+from exgen.load.bank import load_bank
 from exgen.render.context import question_context
 from exgen.render.html import HTML
 from exgen.render.mathml import latex_to_mathml
 from exgen.render.mathtext import MathError
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 TEMPLATE_IDS = sorted(t.id for t in load_bank())
 SEEDS = (0, 2**64 + 1, 2**64 + 77)  # one sheet seed, two from the practice range

@@ -3,10 +3,10 @@ distance sign, rpm for rad/s, the secondary angle not doubled, ...) and the gene
 (measured the other way round, from the wrong axis, half a turn out)."""
 import pytest
 
-from exgen.bank import load_bank
 from exgen.answertypes import answer_type
 from exgen.answertypes.polar import Polar
-from exgen.variant import make_variant
+from exgen.load.bank import load_bank
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 
 TEMPLATES = ("balancing.static_balance", "balancing.two_plane_balance", "balancing.complete_balance_position",
@@ -83,7 +83,7 @@ def test_half_a_turn_out_on_a_bearing_is_the_balancing_direction(bank):
 
 @pytest.fixture(scope="module")
 def flat_four(bank):
-    from exgen.solve import solve
+    from exgen.check.given import solve
 
     variant, _ = solve(bank.get("balancing.inline_engine_firing"),
                        {"firing": "1-3-4-2", "strokes": "4", "m": "1 kg", "r": "60 mm", "l": "240 mm",
@@ -105,7 +105,7 @@ def test_a_shared_alias_of_a_choice_is_accepted(flat_four):
 def test_a_wrong_angle_of_d_carries_forward_to_b(bank):
     import math
 
-    from exgen.variant import answer_for, rerun
+    from exgen.solve.variant import answer_for, rerun
 
     variant = make_variant(bank.get("balancing.complete_balance_position"), 5)
     wrong = (variant.answers["b"].value + 25) % 360

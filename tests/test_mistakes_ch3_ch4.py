@@ -4,10 +4,10 @@ one axis only, friction on the wrong side, the sensitivity inverted, and every o
 import pytest
 
 from exgen import units
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 
-TEMPLATES = sorted(t for t in __import__("exgen.bank", fromlist=["load_bank"]).load_bank().templates
+TEMPLATES = sorted(t for t in __import__("exgen.load.bank", fromlist=["load_bank"]).load_bank().templates
                    if t.startswith(("flywheels.", "governors.")))
 
 

@@ -3,7 +3,7 @@ rpm for rad/s, the diameter for the radius, I about the wrong axis, ω for f (a 
 logarithmic decrement over the wrong number of cycles, the precession (so the effect) reversed, and a
 gyroscopic couple added where it relieves."""
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 
 

@@ -4,9 +4,9 @@ would type it, is marked wrong and named, and every mistake a template lists is 
 import pytest
 
 from exgen.answertypes import answer_type
-from exgen.bank import load_bank
-from exgen.mistake_messages import default_messages
-from exgen.variant import make_variant
+from exgen.load.bank import load_bank
+from exgen.load.mistake_messages import default_messages
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 
 SEEDS = range(30)

@@ -5,10 +5,10 @@ from pathlib import Path
 
 import pytest
 
-import exgen.generate as generate_module
-from exgen.assignment import Student, load_assignment
-from exgen.generate import generate
-from exgen.outdir import MARKER, OutputError
+import exgen.issue.generate as generate_module
+from exgen.issue.assignment import Student, load_assignment
+from exgen.issue.generate import generate
+from exgen.runtime.outdir import MARKER, OutputError
 from graders import report
 from graders.grade import grade_batch
 from graders.report import write_results
@@ -116,7 +116,7 @@ def test_staging_folders_of_earlier_runs_are_removed_or_named(tmp_path):
     import subprocess
     import sys
 
-    from exgen.outdir import WRITER, tidy
+    from exgen.runtime.outdir import WRITER, tidy
 
     target = tmp_path / "out"
     ended = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
@@ -145,7 +145,7 @@ def test_staging_folders_of_earlier_runs_are_removed_or_named(tmp_path):
 
 
 def test_the_output_is_swapped_in_one_step_where_the_system_can(tmp_path):
-    from exgen.outdir import _exchange
+    from exgen.runtime.outdir import _exchange
 
     (tmp_path / "a").mkdir()
     (tmp_path / "a" / "old").write_text("old")

@@ -14,10 +14,10 @@ from pypdf import PdfReader, PdfWriter
 from pypdf.generic import DictionaryObject, NameObject, TextStringObject
 
 from exgen.answertypes import answer_type
-from exgen.assignment import build_sheet, load_assignment
 from exgen.errors import SubmissionError
-from exgen.generate import generate
-from exgen.manifest import read_manifest
+from exgen.issue.assignment import build_sheet, load_assignment
+from exgen.issue.generate import generate
+from exgen.issue.manifest import read_manifest
 from graders import pdf_form
 from graders.answers import read_submission
 from graders.grade import grade_issued

@@ -8,7 +8,7 @@ from pypdf import PdfReader
 from pypdf.generic import (ArrayObject, BooleanObject, DictionaryObject, FloatObject, IndirectObject, NameObject,
                            NullObject, NumberObject, StreamObject)
 
-from exgen.assignment import Student, build_sheet, load_assignment
+from exgen.issue.assignment import Student, build_sheet, load_assignment
 from exgen.render.pdf import key_pdf, sheet_pdf
 from exgen.render.pdf_objects import Name, Number, PdfSyntaxError, Reader, Ref, String, Update, serialised
 

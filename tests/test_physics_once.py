@@ -13,8 +13,8 @@ import sys
 
 import exgen.mechanics
 import exgen.solvers
-import exgen.variant
-from exgen.variant import make_variant
+import exgen.solve.variant
+from exgen.solve.variant import make_variant
 
 SEEDS = range(8)
 
@@ -65,7 +65,7 @@ def reached(monkeypatch, bank) -> tuple[set, dict]:
             for attr, obj in list(vars(module).items()):
                 if inspect.isfunction(obj) and obj in wrapped:
                     monkeypatch.setattr(module, attr, wrapped[obj])
-    solver = exgen.variant.run_solver
+    solver = exgen.solve.variant.run_solver
 
     def run_solver(*args, **kwargs):
         solving[0] = True
@@ -74,7 +74,7 @@ def reached(monkeypatch, bank) -> tuple[set, dict]:
         finally:
             solving[0] = False
 
-    monkeypatch.setattr(exgen.variant, "run_solver", run_solver)
+    monkeypatch.setattr(exgen.solve.variant, "run_solver", run_solver)
     for template in bank:
         for seed in SEEDS:
             make_variant(template, seed)

@@ -5,8 +5,8 @@ and the Markdown pages quote error messages without HTML entities a reader would
 """
 import re
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.cli import main
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.answer_form import answer_form
 from graders.report import _escape
 
@@ -49,7 +49,7 @@ def test_prose_writes_its_symbols_as_math(bank):
     """Titles, sources, statements, asks, labels and worked-solution notes write a symbol as $T_c$, which
     every output can set, never as raw T_c or \\omega (feedback messages, say:, are plain text)."""
     from exgen.render.unicode_math import split_math
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     raw = re.compile(r"\\[A-Za-z]|[_^{}]")
     found = []

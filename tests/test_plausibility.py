@@ -12,13 +12,13 @@ from pathlib import Path
 
 import pytest
 
-from exgen.bank import load_template
+from exgen.check.given import solve
+from exgen.check.validate import validate_template
+from exgen.draw.plausibility import Implausible
 from exgen.errors import BankError, ExgenError
+from exgen.load.bank import load_template
 from exgen.mechanics import engines as me
-from exgen.plausibility import Implausible
-from exgen.solve import solve
-from exgen.validate import validate_template
-from exgen.variant import build_variant, make_variant
+from exgen.solve.variant import build_variant, make_variant
 
 SEEDS = range(150)
 RPM = 2 * math.pi / 60
@@ -102,7 +102,7 @@ def test_a_quantity_of_parameters_alone_is_checked_before_the_solver_runs(tmp_pa
     def no_solver(*args, **kwargs):
         raise AssertionError("the solver ran for a draw its parameters already rule out")
 
-    monkeypatch.setattr("exgen.variant.run_solver", no_solver)
+    monkeypatch.setattr("exgen.solve.variant.run_solver", no_solver)
     with pytest.raises(Implausible):
         build_variant(template, DRAWN_DENSE)
 

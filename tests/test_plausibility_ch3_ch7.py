@@ -2,7 +2,7 @@
 themselves, independently of the templates' own `require:` and `report:` expressions."""
 import math
 
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 SEEDS = range(150)
 G = 9.81

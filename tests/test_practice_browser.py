@@ -9,11 +9,11 @@ from pathlib import Path
 
 import pytest
 
+from chromium import CHROMIUM, SHOTS, needs_chromium
 from exgen.answertypes import answer_type
-from exgen.bank import load_bank
+from exgen.load.bank import load_bank
 from practice.session import Practice
 from practice.store import Store
-from chromium import CHROMIUM, SHOTS, needs_chromium
 from practice_server import running_server
 
 playwright_api = pytest.importorskip("playwright.sync_api", reason="Playwright is not installed")

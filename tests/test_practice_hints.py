@@ -8,13 +8,13 @@ import re
 import pytest
 
 from exgen.answertypes import answer_type
-from exgen.bank import load_bank
+from exgen.draw.seeds import PRACTICE_SEEDS
+from exgen.load.bank import load_bank
 from exgen.render.solution import Filled, solution
 from exgen.render.targets import PLAIN
 from exgen.render.text import line_text
-from exgen.seeds import PRACTICE_SEEDS
+from exgen.solve.variant import make_variant
 from exgen.units import DimensionError, QuantityError, convert, from_si, same_dimension
-from exgen.variant import make_variant
 from graders.grade import grade_variant
 from graders.results import CARRIED, CORRECT
 from practice.hints import hint_ladder
@@ -253,8 +253,8 @@ def test_hints_and_why_not_feedback_never_load_pint():
 
     script = """
 import sys
-from exgen.bank import load_bank
-from exgen.variant import make_variant
+from exgen.load.bank import load_bank
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 from practice.hints import hint_ladder
 for template in load_bank():

@@ -6,15 +6,15 @@ from pathlib import Path
 import pytest
 
 from exgen.answertypes import answer_type
-from exgen.assignment import load_assignment
-from exgen.bank import load_bank
+from exgen.draw.seeds import PRACTICE_SEEDS
 from exgen.errors import ExgenError
+from exgen.figures import figure_svg
+from exgen.issue.assignment import load_assignment
+from exgen.load.bank import load_bank
+from exgen.solve.variant import answer_for, make_variant, rerun
 from practice.scope import Scope
 from practice.session import NoProblem, Practice
 from practice.store import Store
-from exgen.seeds import PRACTICE_SEEDS
-from exgen.figures import figure_svg
-from exgen.variant import answer_for, make_variant, rerun
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 TINY = """\

@@ -13,10 +13,10 @@ import pytest
 
 from exgen.answertypes import answer_type
 from exgen.cli import main
-from exgen.mistake_messages import message_for
+from exgen.load.mistake_messages import message_for
+from exgen.solve.variant import make_variant
 from practice import session
 from practice.store import default_path
-from exgen.variant import make_variant
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 SEEDS = [2**64 + 11, 2**64 + 12, 2**64 + 13]

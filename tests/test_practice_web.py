@@ -213,7 +213,7 @@ def test_scope_keys_round_trip():
 def test_an_assignments_practice_set_keeps_to_its_templates(bank, tmp_path):
     from pathlib import Path
 
-    from exgen.assignment import load_assignment
+    from exgen.issue.assignment import load_assignment
 
     assignment = load_assignment(Path(__file__).resolve().parents[1] / "examples" / "tutorial1.yaml", bank)
     practice = Practice(bank, Store(tmp_path / "p.sqlite3"), assignment, rng=random.Random(9))

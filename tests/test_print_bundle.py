@@ -6,10 +6,10 @@ from pathlib import Path
 import pytest
 from pypdf import PdfReader
 
-from exgen.assignment import Assignment, QuestionSpec, Student
-from exgen.generate import generate
-from exgen.progress import _lines, progress
+from exgen.issue.assignment import Assignment, QuestionSpec, Student
+from exgen.issue.generate import generate
 from exgen.render.bundle import join_pdfs
+from exgen.runtime.progress import _lines, progress
 
 SECRET = b"a course secret used only by these tests"
 

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 import typst
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet, load_assignment
 from exgen.figures.metrics import FAMILY
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet, load_assignment
 from exgen.render.jinja import render
 from exgen.render.mathtext import typst_string
 from exgen.render.pdf import key_typst, sheet_typst

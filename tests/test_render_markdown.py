@@ -5,12 +5,12 @@ import pytest
 
 from exgen import units
 from exgen.answertypes import answer_type
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.figures import draw_figures
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.markdown import key_markdown, sheet_markdown
 from exgen.render.mathtext import text_to_markdown
 from exgen.render.targets import MARKDOWN
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 SECRET = b"x" * 32
 
@@ -107,8 +107,8 @@ def test_same_sheet_same_markdown(sheet, figures, student_md):
 
 
 def test_key_of_a_hand_built_variant(bank):
-    from exgen.assignment import Question, Sheet
-    from exgen.variant import build_variant
+    from exgen.issue.assignment import Question, Sheet
+    from exgen.solve.variant import build_variant
 
     template = bank.get("belts.drive_geometry")
     values = {p.name: p.exact for p in make_variant(template, 2).params}

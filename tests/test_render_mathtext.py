@@ -72,7 +72,7 @@ def test_escape_typst(prose, escaped):
 
 
 def _units_with_a_slash():
-    from exgen.bank import load_bank
+    from exgen.load.bank import load_bank
     from exgen.units import pretty_unit
 
     shown = {pretty_unit(p.unit) for t in load_bank() for p in t.params if getattr(p, "unit", None)}

@@ -1,7 +1,7 @@
 """PDF sheets and keys: Typst source from layouts, compiled in-process, byte-for-byte repeatable."""
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from exgen.render.mathtext import escape_typst
 from exgen.render.pdf import PdfError, compile_pdf, key_pdf, key_typst, sheet_pdf, sheet_typst
 

@@ -5,12 +5,12 @@ from types import SimpleNamespace
 
 import pytest
 
-from exgen.derivation import Column, Step, Table
+from exgen.load.template import PartSpec
 from exgen.render.solution import solution
-from exgen.units import si_unit
 from exgen.render.targets import MARKDOWN, PLAIN, TYPST, number_parts
-from exgen.template import PartSpec
-from exgen.variant import Answer, ParamValue, make_variant
+from exgen.solve.derivation import Column, Step, Table
+from exgen.solve.variant import Answer, ParamValue, make_variant
+from exgen.units import si_unit
 
 
 def fake_variant(steps, params=(), parts=(), answers=None, inserts=()):

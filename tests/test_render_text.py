@@ -1,9 +1,9 @@
 """The terminal view of a variant."""
 import pytest
 
-from exgen.render.unicode_math import text_to_plain
 from exgen.render.text import variant_text
-from exgen.variant import make_variant
+from exgen.render.unicode_math import text_to_plain
+from exgen.solve.variant import make_variant
 
 
 @pytest.mark.parametrize("template_id", ["belts.flat_belt_power", "belts.v_belt_count", "belts.compound_drive"])

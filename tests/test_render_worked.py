@@ -12,12 +12,12 @@ import pytest
 
 from exgen.render.arithmetic import NotArithmetic, evaluate
 from exgen.render.equations import WIDTH, plan
-from exgen.render.widths import term_width
 from exgen.render.formula import FormulaError, parse, terms, write
 from exgen.render.solution import line_value, reproduces, solution
-from exgen.render.working import in_unit as _in, kind as _kind
 from exgen.render.targets import MARKDOWN, PLAIN
-from exgen.variant import make_variant
+from exgen.render.widths import term_width
+from exgen.render.working import in_unit as _in, kind as _kind
+from exgen.solve.variant import make_variant
 
 SEEDS = range(8)
 

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
 from graders.grade import grade_batch
 from graders.report import write_results
 

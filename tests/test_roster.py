@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 
 from exgen.errors import AssignmentError
-from exgen.roster import load_roster, read_roster
+from exgen.issue.roster import load_roster, read_roster
 
 
 def roster(tmp_path: Path, content, name="roster.csv") -> Path:

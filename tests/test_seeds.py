@@ -5,8 +5,8 @@ from pathlib import Path
 
 import pytest
 
+from exgen.draw.seeds import derive_seed, fingerprint, legacy_fingerprint, load_secret, sheet_code
 from exgen.errors import SecretError
-from exgen.seeds import derive_seed, fingerprint, legacy_fingerprint, load_secret, sheet_code
 
 SECRET = b"course secret for tests only 0123456789"
 

@@ -15,9 +15,9 @@ import typst
 from pypdf import PdfReader
 
 from exgen.answertypes import answer_type
-from exgen.assignment import Assignment, QuestionSpec, Student, build_sheet
-from exgen.bank import load_bank
 from exgen.figures import draw_figures
+from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_sheet
+from exgen.load.bank import load_bank
 from exgen.render.bundle import join_pdfs
 from exgen.render.pdf import sheet_pdf, sheet_typst
 from exgen.render.pdf_form import COMBO, INFO_KEYS
@@ -194,8 +194,8 @@ def test_a_pdf_ua_checker_finds_no_failure_the_form_adds(issued):
 @pytest.fixture(scope="module")
 def two_ways(bank):
     """A sheet of Tutorial 1's kind (a drop-down on it) with and without its form."""
+    from exgen.issue.assignment import load_assignment
     from test_grade_issued import EXAMPLES
-    from exgen.assignment import load_assignment
 
     sheet = build_sheet(load_assignment(EXAMPLES / "tutorial1.yaml", bank), STUDENTS[0], bank, SECRET)
     figures = draw_figures(sheet)

@@ -7,14 +7,14 @@ from pathlib import Path
 
 import pytest
 
-from exgen.assignment import Assignment, QuestionSpec, Student
-from exgen.bank import load_template
+from exgen.check.validate import validate_template
 from exgen.cli import main
-from exgen.draw import draw_values, generator
+from exgen.draw.values import draw_values, generator
 from exgen.errors import SolverFailure
+from exgen.issue.assignment import Assignment, QuestionSpec, Student
+from exgen.load.bank import load_template
 from exgen.mechanics import belts
-from exgen.validate import validate_template
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 from graders.report import report_page
 from graders.results import GRADED, WRONG, BatchResult, Column, SheetResult

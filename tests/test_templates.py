@@ -3,9 +3,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from exgen.bank import load_bank
-from exgen.validate import check_variant, validate_template
-from exgen.variant import make_variant
+from exgen.check.validate import check_variant, validate_template
+from exgen.load.bank import load_bank
+from exgen.solve.variant import make_variant
 
 TEMPLATE_IDS = sorted(t.id for t in load_bank())
 

@@ -41,8 +41,8 @@ import math
 
 import pytest
 
-from exgen.solve import solve
-from exgen.variant import make_variant
+from exgen.check.given import solve
+from exgen.solve.variant import make_variant
 from textbook_helpers import answers, printed_steps
 
 G = 9.81

@@ -13,10 +13,10 @@ import pytest
 import yaml
 
 from exgen.answertypes.symbolic import Expression
+from exgen.check.given import solve
 from exgen.cli import main
-from exgen.solve import solve
+from exgen.solve.variant import make_variant
 from exgen.solvers.vibration_formulas import SYMBOLS, SYSTEMS
-from exgen.variant import make_variant
 from graders.grade import grade_variant
 
 TEMPLATE = "vibration.natural_frequency_formula"

@@ -1,4 +1,4 @@
-"""Chapter 7 templates against the course text's worked examples, through exgen.solve.
+"""Chapter 7 templates against the course text's worked examples, through exgen.check.given.
 
 Printed values: the four-bar example (§7.9: the vector method in its own frame, then the
 analytical method in the frame turned to the ground line) and the slider-crank example (§7.10).
@@ -17,7 +17,7 @@ import math
 
 import pytest
 
-from exgen.solve import solve
+from exgen.check.given import solve
 from textbook_helpers import answers_and_steps
 
 

@@ -4,11 +4,11 @@ import re
 
 import pytest
 
-from exgen.bank import load_bank
-from exgen.mistake_messages import message_for
+from exgen.load.bank import load_bank
+from exgen.load.mistake_messages import message_for
 from exgen.render.text import variant_text
 from exgen.render.unicode_math import latex_to_unicode, split_math, text_to_plain
-from exgen.variant import make_variant
+from exgen.solve.variant import make_variant
 
 TEMPLATE_IDS = sorted(t.id for t in load_bank())
 LEFTOVER = re.compile(r"\\[A-Za-z]+|\\[^A-Za-z\s]")

@@ -127,11 +127,12 @@ def test_one_dimension_in_any_spelling(value, src, dst, expected):
 
 def test_the_stored_unit_table_is_what_pint_says_for_every_unit_the_bank_uses(bank):
     """Drawing reads units from data/unit_table.tsv instead of building pint's registry: each row must be
-    pint's own answer, and every unit a template writes must be there (else: python -m exgen.unit_table)."""
-    from exgen import unit_table, units
+    pint's own answer, and every unit a template writes must be there (else: python -m exgen.check.unit_table)."""
+    from exgen import units
+    from exgen.check import unit_table
 
     stored = units._unit_table()
     assert all(units._ask_pint(name) == info for name, info in stored.items())
     assert all(units._spell_with_pint(name) == spelled for name, (_, spelled) in units._unit_table_rows().items())
     missing = unit_table.bank_units(bank) - set(stored) - {"", "1", "dimensionless"}
-    assert not missing, f"units missing from {units.UNIT_TABLE}: {sorted(missing)}; run python -m exgen.unit_table"
+    assert not missing, f"units missing from {units.UNIT_TABLE}: {sorted(missing)}; run python -m exgen.check.unit_table"

@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from exgen.bank import load_template
+from exgen.check.validate import validate_template
 from exgen.errors import DrawError, ExgenError
-from exgen.validate import validate_template
-from exgen.variant import make_variant
+from exgen.load.bank import load_template
+from exgen.solve.variant import make_variant
 from graders.grade import grade_variant
 from graders.results import CARRIED, WRONG
 
@@ -84,7 +84,7 @@ def test_a_step_may_not_take_a_parameters_name(tmp_path):
 
 def test_a_wrong_choice_carries_forward_to_the_parts_worked_from_it(bank):
     """Car wheel reactions: (e)-(h) follow the axle the student said the engine loads in (c)."""
-    from exgen.variant import rerun
+    from exgen.solve.variant import rerun
 
     variant = make_variant(bank.get("gyroscopes.car_wheel_reactions"), 5)
     right = variant.answers["c"].value

@@ -3,9 +3,9 @@ import textwrap
 
 import pytest
 
-from exgen import versions
 from exgen.cli import main
-from exgen.versions import data_digest, template_version
+from exgen.load import versions
+from exgen.load.versions import data_digest, template_version
 
 SOLVER = '''\
 """A solver."""
@@ -58,8 +58,8 @@ def test_data_digest_ignores_order_but_not_values():
 
 def test_a_version_covers_the_solver_the_physics_the_answer_types_and_the_grading(bank):
     version = template_version(bank.get("belts.flat_belt_power"))
-    assert {"exgen/solvers/belts.py", "exgen/mechanics/belts.py", "exgen/variant.py", "exgen/draw.py",
-            "exgen/seeds.py", "exgen/units.py", "graders/marking.py"} <= set(version.code)
+    assert {"exgen/solvers/belts.py", "exgen/mechanics/belts.py", "exgen/solve/variant.py", "exgen/draw/values.py",
+            "exgen/draw/seeds.py", "exgen/units.py", "graders/marking.py"} <= set(version.code)
     assert {f"exgen/answertypes/{t}.py" for t in ("number", "angle", "polar")} <= set(version.code)
     assert "exgen/data/unit_aliases.txt" in version.data and set(version.libraries) == {"numpy", "pint"}
     assert not [m for m in version.code if m.startswith(("exgen/render/", "exgen/figures/", "exgen/cli"))]

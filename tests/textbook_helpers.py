@@ -1,6 +1,6 @@
 """Solving a template for a textbook problem's data in the tests: the answers, the variant and its warnings."""
+from exgen.check.given import solve
 from exgen.cli import solution_json
-from exgen.solve import solve
 
 
 def solved(bank, template_id, **given):

@@ -10,7 +10,7 @@ import importlib
 import pkgutil
 from functools import lru_cache
 
-from ..template import PartSpec
+from ..load.template import PartSpec
 from .base import AnswerType, Given
 
 

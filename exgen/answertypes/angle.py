@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from .. import units
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 from .base import Mistake, exact_quantity
 from .lms import NumericGap, wrong_numbers
 from .number import Number, readings

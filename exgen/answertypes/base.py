@@ -14,7 +14,7 @@ from typing import Any, Callable, Mapping
 
 from .. import units
 from ..errors import ExgenError, FormatProblem, NoAnswer
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 
 #: A named mistake must land at least this many tolerances from the right answer; any closer and
 #: a student who made it could be marked right (see `AnswerType.apart`).

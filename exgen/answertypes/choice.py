@@ -11,7 +11,7 @@ from typing import Mapping
 
 from ..echo import shown
 from ..errors import FormatProblem
-from ..template import PartSpec
+from ..load.template import PartSpec
 from .base import AnswerType, Given, Report, refuse_long
 from .lms import ChoiceGap, Wrong
 

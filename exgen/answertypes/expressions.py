@@ -24,8 +24,8 @@ import re
 from dataclasses import dataclass
 from typing import Mapping
 
-from ..template import default_symbol
 from ..errors import FormatProblem
+from ..load.template import default_symbol
 
 MAX_LENGTH = 200          # characters, checked before anything else
 MAX_DEPTH = 12            # brackets inside brackets

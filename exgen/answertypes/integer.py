@@ -9,7 +9,7 @@ import re
 
 from .. import units
 from ..errors import FormatProblem
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 from .base import AnswerType, Given, asked_unit, refuse_long
 from .lms import NumericGap, wrong_numbers
 from .number import readings

@@ -9,7 +9,7 @@ import math
 
 from .. import units
 from ..errors import ExgenError
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report, exact_quantity, finite
 from .lms import NumericGap, wrong_numbers
 from .quantity import accepted_units, in_unit, unit_name, units_of_kind

@@ -13,12 +13,12 @@ from typing import Mapping
 
 from .. import units
 from ..errors import ExgenError, NoAnswer, QuantityError
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 from .angle import ANGLE_ABS_TOL_DEG, angle, direction_slip
 from .base import AnswerType, Given, Mistake, Report, asked_unit, exact_quantity, refuse_long
 from .lms import NumericGap, wrong_numbers
-from .quantity import accepted_units
 from .number import PREFIXES, REL_TOL, numeric, readings
+from .quantity import accepted_units
 from .quantity import in_unit
 
 _POLAR = re.compile(r"(?:(add|remove|subtract|take away)\s+)?(.+?)\s*(?:\bat\b|@|\u2220|<)\s*(.+)", re.IGNORECASE)

@@ -17,7 +17,7 @@ from functools import lru_cache
 from typing import Mapping
 
 from ..errors import NoAnswer
-from ..template import PartSpec, Tolerance
+from ..load.template import PartSpec, Tolerance
 from .base import AnswerType, Given, Mistake, Report
 from .expressions import CONSTANTS, FUNCTIONS, MAX_LENGTH, Expression, listed
 

@@ -8,7 +8,7 @@ import signal
 import sys
 
 from ..errors import ExgenError
-from ..interrupts import Terminated, handled
+from ..runtime.interrupts import Terminated, handled
 from .commands import solution_json
 from .parser import build_parser
 

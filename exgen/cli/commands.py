@@ -10,29 +10,29 @@ from pathlib import Path
 
 from ..errors import ExgenError
 
-CLOSE_MISTAKE = "lands within"  # exgen.variant.mistakes_apart's warning, for values a user gave
+CLOSE_MISTAKE = "lands within"  # exgen.solve.variant.mistakes_apart's warning, for values a user gave
 CLOSE_MISTAKE_MEANS = ("a mistake that close is marked right: for these values the grader cannot tell it from "
                        "the answer; sheets never draw such values")
 EXPORT_SUFFIX = {"moodle": ".xml", "qti": ".zip", "canvas": ".zip"}
-SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.seeds.PRACTICE_SEEDS)
+SEED_MAX = 2**65 - 1  # sheets' seeds are below 2^64, practice's from 2^64 (exgen.draw.seeds.PRACTICE_SEEDS)
 
 
 def _progress(items, total, label="working"):
-    from ..progress import progress
+    from ..runtime.progress import progress
 
     return progress(items, total, label)
 
 
 def _bank(args, full: bool = True):
-    """The bank; `full` False for commands that only list or draw (see exgen.bank.load_bank)."""
-    from ..bank import load_bank
+    """The bank; `full` False for commands that only list or draw (see exgen.load.bank.load_bank)."""
+    from ..load.bank import load_bank
 
     return load_bank([Path(p) for p in args.bank], full)
 
 
 def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
     """The course secret and where it came from: --secret-file, else $EXGEN_SECRET, else `default`."""
-    from ..seeds import ENV_VAR, load_secret
+    from ..draw.seeds import ENV_VAR, load_secret
 
     explicit = bool(args.secret_file)
     path = Path(args.secret_file) if explicit else default
@@ -43,7 +43,7 @@ def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
         print(f"Created a new course secret in {path}. Keep it private: grading needs it.", file=sys.stderr)
         source = source[: -len(" (new)")]
     elif not source.startswith("$"):
-        from ..seeds import exposure
+        from ..draw.seeds import exposure
 
         warning = exposure(Path(source))
         if warning:
@@ -53,7 +53,7 @@ def _secret(args, default: Path | None, create: bool) -> tuple[bytes, str]:
 
 def _tidy(out: Path) -> None:
     """What interrupted runs left beside the output folder: removed, or named."""
-    from ..outdir import tidy
+    from ..runtime.outdir import tidy
 
     for note in tidy(out):
         print(f"note: {note}", file=sys.stderr)
@@ -61,7 +61,7 @@ def _tidy(out: Path) -> None:
 
 def _roster(path: Path) -> list:
     """The roster's students; which columns were read, when a learning system named them."""
-    from ..roster import read_roster
+    from ..issue.roster import read_roster
 
     roster = read_roster(path)
     read = [f"{field}s from `{header}`" for field, header in roster.columns.items()
@@ -73,7 +73,7 @@ def _roster(path: Path) -> list:
 
 def _assignment_and_roster(args):
     """The bank, the assignment (checked against it) and the roster path (option, else the file's)."""
-    from ..assignment import load_assignment
+    from ..issue.assignment import load_assignment
 
     bank = _bank(args)
     assignment = load_assignment(Path(args.assignment), bank)
@@ -96,7 +96,7 @@ def cmd_list(args) -> int:
 
 def cmd_show(args) -> int:
     from ..render.text import variant_text
-    from ..variant import make_variant
+    from ..solve.variant import make_variant
 
     template = _bank(args, full=False).get(args.id)
     seed = args.seed if args.seed is not None else secrets.randbits(32)
@@ -125,8 +125,8 @@ def _write_figures(variant, folder: Path, key: bool) -> list[Path]:
 
 
 def cmd_solve(args) -> int:
+    from ..check.given import parse_settings, solve
     from ..render.unicode_math import text_to_plain
-    from ..solve import parse_settings, solve
 
     template = _bank(args).get(args.id)
     variant, warnings = solve(template, parse_settings(args.set))
@@ -181,7 +181,7 @@ def solution_json(variant) -> dict:
 
 
 def cmd_generate(args) -> int:
-    from ..generate import default_jobs, generate
+    from ..issue.generate import default_jobs, generate
 
     bank, assignment, roster_path = _assignment_and_roster(args)
     if roster_path is None:
@@ -209,9 +209,9 @@ def cmd_grade(args) -> int:
     from graders.grade import grade_issued
     from graders.report import write_results
 
-    from ..bank import refuse_code_in
-    from ..manifest import read_manifest
-    from ..outdir import check_target
+    from ..issue.manifest import read_manifest
+    from ..load.bank import refuse_code_in
+    from ..runtime.outdir import check_target
 
     manifest = read_manifest(Path(args.issued))
     submissions = Path(args.submissions)
@@ -226,7 +226,7 @@ def cmd_grade(args) -> int:
         else None
     secret, source = _secret(args, recorded, create=False)
     roster = _roster(Path(args.roster)) if args.roster else None
-    from ..generate import default_jobs
+    from ..issue.generate import default_jobs
 
     batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
                          progress=_progress, jobs=args.jobs or default_jobs(), accept_limits=args.accept_limits)
@@ -257,7 +257,7 @@ def cmd_export(args) -> int:
     if files and (len(files) > 1 or len(args.sources) > 1):
         raise ExgenError("give one assignment file, or template ids, not both")
     if files:
-        from ..assignment import load_assignment
+        from ..issue.assignment import load_assignment
 
         assignment = load_assignment(Path(files[0]), bank)
         specs = [(q.slot, bank.get(q.template), q.points or bank.get(q.template).points) for q in assignment.questions]
@@ -284,7 +284,7 @@ def cmd_report(args) -> int:
 
 
 def cmd_validate(args) -> int:
-    from ..validate import validate_bank
+    from ..check.validate import validate_bank
 
     bank = _bank(args)
     templates = [bank.get(i) for i in args.ids] if args.ids else list(bank)
@@ -300,7 +300,7 @@ def cmd_validate(args) -> int:
 
 def _practice(args):
     """The practice core over the progress file, limited to an assignment's templates if one is given."""
-    from ..assignment import load_assignment
+    from ..issue.assignment import load_assignment
     from practice.session import Practice
     from practice.store import Store
 

@@ -2,7 +2,7 @@
 drawn N times, and every variant as an export item (its text, figure, gaps and worked solution).
 
 A learning system picks one variant per student, so the pool is drawn from seeds keyed by the course
-secret (exgen.seeds.pool_seed) like every sheet: the answers of a pool cannot be rebuilt without it.
+secret (exgen.draw.seeds.pool_seed) like every sheet: the answers of a pool cannot be rebuilt without it.
 A part whose answer type no learning system can grade (a formula) is left out of the item, and the
 pool says so in its notices; a question left with no part is left out whole.
 """
@@ -15,13 +15,13 @@ from markupsafe import Markup
 
 from ..answertypes import answer_type
 from ..answertypes.lms import NoLmsForm
+from ..draw.seeds import pool_seed
 from ..figures import figure_svg, key_figure_svgs, Drawn
-from ..mistake_messages import message_for
-from ..progress import Progress, silent
+from ..load.mistake_messages import message_for
+from ..load.template import Template
 from ..render.context import key_context
-from ..seeds import pool_seed
-from ..template import Template
-from ..variant import Variant, make_variant
+from ..runtime.progress import Progress, silent
+from ..solve.variant import Variant, make_variant
 from .html import render
 from .mistakes import ordered_wrongs
 

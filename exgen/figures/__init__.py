@@ -1,7 +1,7 @@
 """Figures for problems: SVG text drawn from a variant.
 
 A template names the figure the student sees (`figure: belts:belt_drive` -> exgen.figures.belts.belt_drive,
-or a function in a file of its bank folder, `figure: ./cam.py:cam_figure`: exgen.references) and, optionally, figures only its key shows (`key_figures: [polygons:two_plane_polygons]`: the
+or a function in a file of its bank folder, `figure: ./cam.py:cam_figure`: exgen.load.references) and, optionally, figures only its key shows (`key_figures: [polygons:two_plane_polygons]`: the
 force and couple polygons the worked solution closes). Each function takes the variant and returns
 an SVG document whose <title> is its caption. A sheet's figures are drawn once (`draw_figures`) and
 the same text is written to every folder and embedded in every output.
@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-from ..references import resolve, split
+from ..load.references import resolve, split
 
 _TITLE = re.compile(r"<title>(.*?)</title>", re.DOTALL)
 

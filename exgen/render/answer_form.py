@@ -42,7 +42,7 @@ FORM_HEADER = """\
 
 
 def answer_form(sheet) -> str:
-    """The YAML answer file for one student's sheet (exgen.assignment.Sheet, as every renderer reads it);
+    """The YAML answer file for one student's sheet (exgen.issue.assignment.Sheet, as every renderer reads it);
     read back untouched, every answer is blank."""
     who = " ".join(x for x in (sheet.student.id, f"({sheet.student.name})" if sheet.student.name else "") if x)
     lines = [FORM_HEADER.format(title=_comment(sheet.assignment.title), who=_comment(who),

@@ -17,9 +17,9 @@ from typing import Any
 
 from .. import units
 from ..answertypes import answer_type
-from ..derivation import Column, Table
 from ..errors import ExgenError
-from ..template import default_symbol
+from ..load.template import default_symbol
+from ..solve.derivation import Column, Table
 from .arithmetic import NotArithmetic, evaluate
 from .formula import Formula, FormulaError, parse, written
 from .targets import MARKDOWN, PLAIN, SIG, number_parts

@@ -15,7 +15,7 @@ from typing import Any
 
 from .. import units
 from ..errors import ExgenError, QuantityError
-from ..template import default_symbol
+from ..load.template import default_symbol
 from .formula import Formula
 
 @lru_cache(maxsize=512)

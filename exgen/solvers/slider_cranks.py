@@ -88,7 +88,7 @@ def _distance(where: str, crank: float, coupler: float, theta2: float, theta3: f
 
 def _mistakes(p, d, where: str, position) -> None:
     """The other branch, the size of θ3 without its sense, γ's supplement and the offset left out:
-    each named only where the data let it show (by the answer's tolerance: exgen.variant.mistakes_apart)."""
+    each named only where the data let it show (by the answer's tolerance: exgen.solve.variant.mistakes_apart)."""
     slide = SLIDE_OF[where]
     other = solve_slider(p.L2, p.L3, p.L1, p.theta2, slide, OTHER[where])
     theta3, l4, gamma = position.theta3, d.value_of("L4"), d.value_of("gamma")

@@ -41,7 +41,7 @@ def _value(value):
 
 def record(template) -> dict:
     """What the template draws and answers at each seed."""
-    from exgen.variant import make_variant
+    from exgen.solve.variant import make_variant
 
     seeds = {}
     for seed in SEEDS:
@@ -91,7 +91,7 @@ def write(template) -> Path:
 
 
 def main(argv: list[str]) -> int:
-    from exgen.bank import load_bank
+    from exgen.load.bank import load_bank
 
     bank = load_bank()
     update = "--update" in argv

@@ -13,12 +13,12 @@ import time
 from collections import Counter
 from dataclasses import dataclass, field
 
-from .answertypes import answer_type
-from .draw import failed_requirement
-from .errors import ExgenError, FormatProblem, SolverFailure, WrongKind
-from .mistake_messages import default_messages
-from .template import ReportSpec, Template
-from .variant import Variant, answer_for, make_variant, rerun
+from ..answertypes import answer_type
+from ..draw.values import failed_requirement
+from ..errors import ExgenError, FormatProblem, SolverFailure, WrongKind
+from ..load.mistake_messages import default_messages
+from ..load.template import ReportSpec, Template
+from ..solve.variant import Variant, answer_for, make_variant, rerun
 
 USES_TRIALS = 5  # draws in which a part's answer must follow the parts it uses
 DISTINCT_WARNING = 0.9
@@ -50,7 +50,7 @@ class Report:
     def details(self) -> list[str]:
         """The drawn range of each reported quantity against its plausible range, then the commonest
         reasons draws were rejected (what a template author tightens or constructs differently)."""
-        from .units import format_number, pretty_unit
+        from ..units import format_number, pretty_unit
 
         lines = []
         for spec, low, high in self.ranges:
@@ -167,7 +167,7 @@ def _check_key_grades_itself(variant: Variant) -> list[str]:
 
 def _check_mistakes(template: Template, variants: list[Variant], report: Report) -> None:
     """Every mistake a part names is one the solver records, and has words for the student. (That it
-    never gives the right answer is enforced in every draw: exgen.variant.mistakes_apart.)"""
+    never gives the right answer is enforced in every draw: exgen.solve.variant.mistakes_apart.)"""
     for part in template.parts:
         for mistake in part.mistakes:
             if not any(mistake.when in v.mistakes[part.id] for v in variants):

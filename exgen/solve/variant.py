@@ -9,16 +9,16 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Any, Mapping
 
-from . import units
-from .answertypes import answer_type
-from .answertypes.base import MISTAKE_GAP
+from .. import units
+from ..answertypes import answer_type
+from ..answertypes.base import MISTAKE_GAP
+from ..draw.plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
+from ..draw.values import draw_values, failed_requirement, generator, si_values
+from ..errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
+from ..load.references import resolve
+from ..load.template import PartSpec, Template, default_symbol
+from ..load.text import render_text
 from .derivation import PLACEHOLDER, Derivation, Params, Step
-from .draw import draw_values, failed_requirement, generator, si_values
-from .errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
-from .plausibility import Implausible, Reading, early_rejection, first_implausible, names_for, readings
-from .references import resolve
-from .template import PartSpec, Template, default_symbol
-from .text import render_text
 
 MAX_TRIES = 1000
 
@@ -103,7 +103,7 @@ class Variant:
         except Exception as exc:
             if not type(exc).__module__.startswith("jinja2"):
                 raise
-            # a text that a bank loaded without its full check let through (exgen.bank.load_bank)
+            # a text that a bank loaded without its full check let through (exgen.load.bank.load_bank)
             raise TemplateError(self.template.path, key, f"cannot be written: {exc}") from None
 
     def param(self, name: str) -> ParamValue:
@@ -252,7 +252,7 @@ def where_raised(exc: BaseException, solver=None) -> str:
     return text if solver is raised else f"{text} (from {_short(solver.filename)}:{solver.lineno} in {solver.name})"
 
 
-_ROOT = Path(__file__).resolve().parent.parent  # the folder holding the exgen package
+_ROOT = Path(__file__).resolve().parent.parent.parent  # the folder holding the exgen package
 
 
 def _short(filename: str) -> str:

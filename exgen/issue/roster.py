@@ -17,9 +17,9 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..errors import AssignmentError
+from ..runtime.safefile import NotText, Unreadable, read_text
 from .assignment import Student
-from .errors import AssignmentError
-from .safefile import NotText, Unreadable, read_text
 
 MAX_BYTES = 16 * 1024 * 1024
 READ_SECONDS = 10.0

@@ -12,11 +12,11 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .bank import Bank
-from .errors import AssignmentError, ExgenError
-from .yamlfile import YamlFileError, place, read_yaml
-from .seeds import derive_seed, sheet_code
-from .variant import Variant, make_variant
+from ..draw.seeds import derive_seed, sheet_code
+from ..errors import AssignmentError, ExgenError
+from ..load.bank import Bank
+from ..runtime.yamlfile import YamlFileError, place, read_yaml
+from ..solve.variant import Variant, make_variant
 
 ASSIGNMENT_KEYS = {"assignment", "title", "course", "due", "instructions", "secret_file", "questions", "roster"}
 QUESTION_KEYS = {"template", "slot", "points"}

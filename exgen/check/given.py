@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from decimal import Decimal
 
-from . import units
-from .domains import PERCENT_UNITS, domain_of, drawn_values
-from .draw import derived_value, failed_requirement, si_values
-from .errors import ExgenError, QuantityError
-from .render.unicode_math import text_to_plain
-from .template import Template
-from .variant import Variant, build_variant
+from .. import units
+from ..draw.values import derived_value, failed_requirement, si_values
+from ..errors import ExgenError, QuantityError
+from ..load.domains import PERCENT_UNITS, domain_of, drawn_values
+from ..load.template import Template
+from ..render.unicode_math import text_to_plain
+from ..solve.variant import Variant, build_variant
 
 
 def parse_settings(pairs: list[str]) -> dict[str, str]:

@@ -8,7 +8,7 @@ folder of templates it was loaded from), so an instructor's folder of templates 
 A bank folder's files are the instructor's own code, trusted as a Python package the instructor installs
 is: a file a template names runs when that template is loaded in full or drawn. Nothing else in a bank
 folder runs, a file outside it is refused, and grading never takes its code from the folder of answers
-handed in (exgen.bank.refuse_code_in).
+handed in (exgen.load.bank.refuse_code_in).
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ from functools import lru_cache
 from hashlib import sha256
 from pathlib import Path
 
-from .errors import ExgenError
+from ..errors import ExgenError
 
 #: Where a packaged reference ('belts:belt_power') is looked up, by what it names.
 PACKAGES = {"solvers": "exgen.solvers", "figures": "exgen.figures"}
@@ -52,7 +52,7 @@ def check(reference: str, kind: str, template_file: Path, bank_dir: Path, full: 
                          f"naming one in a file beside the template")
     if module.endswith(".py"):
         reference = f"{_bank_file(module, template_file, bank_dir).as_posix()}:{function}"
-    elif not (Path(__file__).parent / kind / f"{module}.py").is_file():
+    elif not (Path(__file__).parent.parent / kind / f"{module}.py").is_file():
         raise ValueError(f"no module {package}.{module}")
     if full:
         try:
@@ -81,7 +81,7 @@ def resolve(reference: str, kind: str):
     """The function a loaded template's reference names, imported on first use."""
     module, function = split(reference)
     found = getattr(_module(reference, kind), function, None)
-    if not callable(found):  # a bank loaded without its full check (exgen.bank.load_bank)
+    if not callable(found):  # a bank loaded without its full check (exgen.load.bank.load_bank)
         where = module if is_local(reference) else f"{PACKAGES[kind]}.{module}"
         raise ExgenError(f"{reference!r}: {where} has no function {function!r}")
     return found

@@ -10,9 +10,9 @@ from decimal import Decimal
 
 import numpy as np
 
-from . import expr
-from .template import Template
-from .units import to_si
+from ..load import expr
+from ..load.template import Template
+from ..units import to_si
 
 _TWO_64 = 1 << 64
 

@@ -23,8 +23,8 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
-from . import __version__
-from .errors import ExgenError
+from .. import __version__
+from ..errors import ExgenError
 
 MARKER = ".exgen-output"
 #: In a folder being written: which process on which host writes it.

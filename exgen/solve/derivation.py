@@ -15,8 +15,8 @@ import re
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
-from .errors import ExgenError, InvalidDraw
-from .template import default_symbol
+from ..errors import ExgenError, InvalidDraw
+from ..load.template import default_symbol
 
 PLACEHOLDER = re.compile(r"@([A-Za-z_][A-Za-z0-9_]*)")
 

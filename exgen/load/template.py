@@ -1,6 +1,6 @@
 """The typed form of a template file: what a problem draws, asks and accepts.
 
-Instances are built once by `exgen.bank` (which validates them) and never change.
+Instances are built once by `exgen.load.bank` (which validates them) and never change.
 """
 from __future__ import annotations
 
@@ -25,7 +25,7 @@ class ParamSpec:
     step: Decimal | None = None
     choices: tuple = ()
     equals: str = ""  # a given worked out from earlier ones (e.g. the loop that closes a cycle)
-    domain: str = ""  # the values that make physical sense, as an interval (exgen.domains); "" derives it
+    domain: str = ""  # the values that make physical sense, as an interval (exgen.load.domains); "" derives it
     given: bool = True  # False: it only chooses what the figure draws (the figure is the given), not a key's given
 
     @property
@@ -126,7 +126,7 @@ class Template:
     topic: str = ""
     path: Path | None = None
     bank_dir: Path | None = None  # the folder of templates it was loaded from, which may hold its own code
-    digest: str = ""  # sha256 of the parsed data (exgen.versions.data_digest); its full version: template_version
+    digest: str = ""  # sha256 of the parsed data (exgen.load.versions.data_digest); its full version: template_version
     report: tuple[ReportSpec, ...] = ()
 
     def param(self, name: str) -> ParamSpec:

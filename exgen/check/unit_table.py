@@ -1,5 +1,5 @@
 """The stored unit table, exgen/data/unit_table.tsv, rewritten from pint and the bank:
-`python -m exgen.unit_table`.
+`python -m exgen.check.unit_table`.
 
 Reading a printed or typed quantity looks its unit up in that table instead of building pint's registry
 (~0.3 s); the table holds pint's own answer for every unit the bank's templates write, and for those
@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from . import units
-from .answertypes.quantity import unit_families
-from .variant import make_variant
+from .. import units
+from ..answertypes.quantity import unit_families
+from ..solve.variant import make_variant
 
 #: Units stored beside those the bank's templates use: what students commonly type.
 COMMON_UNITS = ("N", "kN", "MN", "N*m", "kN*m", "Nm", "W", "kW", "MW", "J", "kJ", "m", "mm", "cm", "km", "s",
@@ -34,7 +34,7 @@ def bank_units(bank) -> set[str]:
 
 
 if __name__ == "__main__":
-    from .bank import load_bank
+    from ..load.bank import load_bank
 
     units._unit_table_rows = dict  # ask pint for everything, the stored table unread
     Path(units.__file__).parent.joinpath(units.UNIT_TABLE).write_text(units.unit_table(bank_units(load_bank())),

@@ -12,9 +12,10 @@ import math
 from dataclasses import dataclass
 from functools import lru_cache
 
-from . import expr, units
-from .errors import ExgenError, InvalidDraw
-from .template import ReportSpec, Template
+from .. import units
+from ..errors import ExgenError, InvalidDraw
+from ..load import expr
+from ..load.template import ReportSpec, Template
 
 
 class Implausible(InvalidDraw):

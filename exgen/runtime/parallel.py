@@ -5,7 +5,7 @@ in the parent, and hang. The shared inputs (bank, assignment, secret) reach each
 its initializer, not with every task. A spawned pool starts multiprocessing's resource tracker, a
 process that outlives the pool; it is stopped here too when this pool was what started it, so a
 caller that lives on (a test run, a server) keeps no stray process. Workers that typeset can start
-with a faster allocator preloaded (exgen.allocator).
+with a faster allocator preloaded (exgen.runtime.allocator).
 
 A worker ends with its parent even when the parent is killed outright (kill -9, which runs no cleanup):
 on Linux the kernel kills it at once (PR_SET_PDEATHSIG), and everywhere a thread of the worker's own

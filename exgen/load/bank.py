@@ -12,15 +12,15 @@ from functools import lru_cache, partial
 from importlib import resources
 from pathlib import Path
 
+from ..answertypes import answer_type, names as answer_type_names
+from ..errors import BankError, ExgenError, TemplateError, UnknownTemplate
+from ..runtime.yamlfile import YamlFileError, place, read_yaml
 from . import expr, references
-from .answertypes import answer_type, names as answer_type_names
 from .domains import domain_of, drawn_values, parse_domain
-from .errors import BankError, ExgenError, TemplateError, UnknownTemplate
 from .keypaths import key_words
 from .template import MistakeSpec, ParamSpec, PartSpec, ReportSpec, Template
 from .text import undeclared_names
 from .versions import data_digest
-from .yamlfile import YamlFileError, place, read_yaml
 
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
@@ -301,8 +301,8 @@ class _Reader:
         """`report:` entries: {what: belt density, value: m / A, unit: kg/m^3, range: [1000, 1500]}.
         Names in `value` are parameters or solver steps; steps are known only once the solver runs,
         so a wrong name is reported by `exgen validate`."""
-        from . import units
-        from .errors import QuantityError
+        from .. import units
+        from ..errors import QuantityError
 
         if not isinstance(data, list):
             self.error(("report",), "must be a list of {what, value, unit, range}")
@@ -342,7 +342,7 @@ class _Reader:
 
     def reference(self, ref, kind: str, where) -> str | None:
         """'belts:flat_belt_power' (exgen.<kind>.belts) or './cam.py:rise' (a file of the bank), checked;
-        `full` also imports it and checks its function (exgen.references)."""
+        `full` also imports it and checks its function (exgen.load.references)."""
         if ref is None:
             return None
         try:

@@ -25,9 +25,9 @@ from .template import Template
 #: Packages whose modules are followed; anything else imported (numpy, pint) is counted by its version.
 PACKAGES = ("exgen", "graders")
 #: Every template runs these: drawing and the variant (numbers), grading (verdicts).
-COMMON_ROOTS = ("exgen.variant", "graders.marking")
+COMMON_ROOTS = ("exgen.solve.variant", "graders.marking")
 #: Output only: what they print never changes a number or a verdict.
-OUTPUT_ONLY = ("exgen.render", "exgen.figures", "exgen.cli", "exgen.generate", "graders.report", "exgen.versions")
+OUTPUT_ONLY = ("exgen.render", "exgen.figures", "exgen.cli", "exgen.issue.generate", "graders.report", "exgen.load.versions")
 #: Folders of data files the code reads (aliases, messages).
 DATA_DIRS = ("exgen/data", "graders/data")
 LIBRARIES = ("numpy", "pint")
@@ -125,7 +125,7 @@ def file_hashes(version: TemplateVersion) -> dict[str, str]:
 def _roots() -> dict[str, Path]:
     """Where each package's files are; graders is found, not imported (exgen never imports it)."""
     graders = importlib.util.find_spec("graders")
-    return {"exgen": Path(__file__).parent, "graders": Path(graders.origin).parent}
+    return {"exgen": Path(__file__).parent.parent, "graders": Path(graders.origin).parent}
 
 
 def _relative(path: Path) -> str:

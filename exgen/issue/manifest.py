@@ -2,7 +2,7 @@
 
 Seeds are recorded by their derivation inputs only (a seed would let its holder rebuild the key);
 the secret by a fingerprint; each template by a version covering everything that can change a
-number or a verdict (exgen.versions). Grading reads the roster, the questions and the sheet codes
+number or a verdict (exgen.load.versions). Grading reads the roster, the questions and the sheet codes
 from here, and `issue_mismatches` says what differs now, before any mark is given.
 """
 from __future__ import annotations
@@ -12,13 +12,13 @@ import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from . import __version__
+from .. import __version__
+from ..draw.seeds import fingerprint, legacy_fingerprint
+from ..errors import ExgenError
+from ..load.bank import Bank
+from ..load.versions import LIBRARIES, current_hash, file_hashes, template_version
+from ..runtime.outdir import recover
 from .assignment import Assignment, QuestionSpec, Sheet, Student
-from .bank import Bank
-from .errors import ExgenError
-from .outdir import recover
-from .seeds import fingerprint, legacy_fingerprint
-from .versions import LIBRARIES, current_hash, file_hashes, template_version
 
 FORMAT = 2
 MANIFEST = "manifest.json"
@@ -91,7 +91,7 @@ def write_manifest(manifest: dict, path: Path) -> None:
 
 def manifest_path(issued: Path) -> Path:
     """The manifest of an issued folder (the --out of `exgen generate`), or the file itself. A folder an
-    interrupted rerun left aside is put back first (exgen.outdir.recover)."""
+    interrupted rerun left aside is put back first (exgen.runtime.outdir.recover)."""
     issued = Path(issued)
     if not issued.exists():
         recover(issued.parent if issued.name == MANIFEST else issued)

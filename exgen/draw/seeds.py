@@ -18,8 +18,8 @@ from collections import Counter
 from functools import lru_cache
 from pathlib import Path
 
-from .errors import SecretError
-from .safefile import UnsafeFile, read_bytes
+from ..errors import SecretError
+from ..runtime.safefile import UnsafeFile, read_bytes
 
 ENV_VAR = "EXGEN_SECRET"
 MIN_SECRET_BYTES = 16

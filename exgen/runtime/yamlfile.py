@@ -1,7 +1,7 @@
 """An instructor's YAML file (an assignment, a template), read with the caps answer files are read with,
 and its mistakes said in plain words at file:line:column.
 
-The file is read as answer files are (exgen.safefile: a regular file, at most MAX_BYTES, by a deadline),
+The file is read as answer files are (exgen.runtime.safefile: a regular file, at most MAX_BYTES, by a deadline),
 parsed into a node tree (libyaml bounds nesting; aliases stay references), and checked before any value
 is built: at most MAX_DEPTH levels and MAX_ENTRIES entries with every alias counted as the copy it
 stands for (the "billion laughs" file, a few hundred bytes that expand a billion times, is refused
@@ -16,7 +16,7 @@ from pathlib import Path
 
 import yaml
 
-from .errors import ExgenError
+from ..errors import ExgenError
 from .safefile import NotText, Unreadable, read_text
 
 #: As for answer files (graders.formats): an instructor's file is a few kilobytes.

@@ -16,16 +16,16 @@ import os
 from dataclasses import dataclass
 from pathlib import Path
 
-from . import parallel
-from .allocator import faster_allocator
+from ..load.bank import Bank
+from ..render.answer_form import answer_form
+from ..runtime import parallel
+from ..runtime.allocator import faster_allocator
+from ..runtime.outdir import check_target, replacing
+from ..runtime.progress import Progress, silent
 from .assignment import Assignment, Sheet, Student, build_sheet
-from .bank import Bank
 from .manifest import MANIFEST, build_manifest, write_manifest
-from .outdir import check_target, replacing
-from .progress import Progress, silent
-from .render.answer_form import answer_form
 
-KIND = "generate"  # the marker an issued folder carries (exgen.outdir)
+KIND = "generate"  # the marker an issued folder carries (exgen.runtime.outdir)
 
 
 @dataclass(frozen=True)
@@ -43,7 +43,7 @@ def draw_sheets(assignment: Assignment, students: list[Student], bank: Bank, sec
 def write_figures(sheet: Sheet, student_dir: Path, key_dir: Path):
     """Each question's figures, drawn once: the sheet's figure as an SVG file in both folders, a
     key-only figure in the key's folder alone. Returns the drawn figures for the renderers."""
-    from .figures import draw_figures
+    from ..figures import draw_figures
 
     figures = draw_figures(sheet)
     for drawn in figures.values():
@@ -58,7 +58,7 @@ def write_figures(sheet: Sheet, student_dir: Path, key_dir: Path):
 def write_student(sheet: Sheet, out: Path, pdf: bool = True, key_pdf: bool = True) -> None:
     """The student's folder (sheet, form, figures) and the instructor's key folder; `key_pdf` False
     leaves the key in Markdown only (its PDF costs most of a sheet's time)."""
-    from .render.markdown import key_markdown, sheet_markdown
+    from ..render.markdown import key_markdown, sheet_markdown
 
     student_dir = out / "students" / sheet.student.id
     key_dir = out / "keys" / sheet.student.id
@@ -69,7 +69,7 @@ def write_student(sheet: Sheet, out: Path, pdf: bool = True, key_pdf: bool = Tru
     (student_dir / "answers.yaml").write_text(answer_form(sheet), encoding="utf-8")
     (key_dir / "key.md").write_text(key_markdown(sheet, figures), encoding="utf-8")
     if pdf:
-        from .render.pdf import key_pdf as make_key_pdf, sheet_pdf
+        from ..render.pdf import key_pdf as make_key_pdf, sheet_pdf
 
         (student_dir / "sheet.pdf").write_bytes(sheet_pdf(sheet, figures))
         if key_pdf:
@@ -91,7 +91,7 @@ def generate(assignment: Assignment, students: list[Student], bank: Bank, secret
              *, pdf: bool = True, key_pdf: bool = True, jobs: int = 1, progress: Progress = silent,
              secret_source: str = "", print_bundle: bool = False) -> Issued:
     """Draw every sheet, then write them into a folder beside `out` that replaces it only when complete
-    (exgen.outdir); with jobs > 1 the PDFs are made in that many processes, which start first and rebuild
+    (exgen.runtime.outdir); with jobs > 1 the PDFs are made in that many processes, which start first and rebuild
     their sheets themselves while this one draws every sheet for the manifest (Markdown alone is made in
     this one: starting processes would cost more than it saves)."""
     out = Path(out)
@@ -111,7 +111,7 @@ def generate(assignment: Assignment, students: list[Student], bank: Bank, secret
             for sheet in progress(sheets, len(sheets), "writing"):
                 write_student(sheet, folder, pdf, key_pdf)
         if print_bundle and pdf:
-            from .render.bundle import write_bundles
+            from ..render.bundle import write_bundles
 
             write_bundles(folder, [s.student.id for s in sheets], keys=key_pdf)
         write_manifest(manifest, folder / MANIFEST)
