@@ -43,16 +43,16 @@ def where(path, line: int | None, column: int | None = None) -> str:
     return f"{path}:{line}:{column}" if column else f"{path}:{line}"
 
 
-def read_yaml(path: Path, what: str = "the file"):
+def read_yaml(path: Path, what: str = "the file", *, max_bytes: int = MAX_BYTES, max_entries: int = MAX_ENTRIES):
     """(node tree, data) of a YAML file, or YamlFileError. `what` names the file in messages ("an
-    assignment file")."""
+    assignment file"); a file that grows with the class (review decisions) is read with larger caps."""
     path = Path(path)
-    text = _text(path)
+    text = _text(path, max_bytes)
     loader = _Loader(text)
     try:
         root = loader.get_single_node()
         if root is not None:
-            _check(path, root, what)
+            _check(path, root, what, max_entries)
         data = loader.construct_document(root) if root is not None else None
     except yaml.YAMLError as exc:
         raise YamlFileError(path, *_explained(exc, text, what)) from None
@@ -61,16 +61,16 @@ def read_yaml(path: Path, what: str = "the file"):
     return root, data
 
 
-def _text(path: Path) -> str:
+def _text(path: Path, max_bytes: int = MAX_BYTES) -> str:
     try:
-        return read_text(path, MAX_BYTES, READ_SECONDS)
+        return read_text(path, max_bytes, READ_SECONDS)
     except NotText as exc:
         raise YamlFileError(path, f"{exc.reason}: save the file as UTF-8", exc.line, exc.column) from None
     except Unreadable as exc:
         raise YamlFileError(path, exc.reason if exc.missing else f"cannot be read: {exc.reason}") from None
 
 
-def _check(path: Path, root: yaml.Node, what: str) -> None:
+def _check(path: Path, root: yaml.Node, what: str, max_entries: int = MAX_ENTRIES) -> None:
     """Depth, entries and duplicate keys, over the node tree, before any value is built. A tree without
     aliases is walked once, counting; one with aliases is measured as expanded (`_check_aliased`)."""
     seen: set[int] = set()
@@ -78,10 +78,10 @@ def _check(path: Path, root: yaml.Node, what: str) -> None:
     while stack:
         node, level = stack.pop()
         if id(node) in seen:  # an alias: sizes must count it as the copy it stands for
-            return _check_aliased(path, root, what)
+            return _check_aliased(path, root, what, max_entries)
         seen.add(id(node))
-        if len(seen) > MAX_ENTRIES:
-            raise YamlFileError(path, f"more than {MAX_ENTRIES:,} entries: far more than {what} holds", *_mark(node))
+        if len(seen) > max_entries:
+            raise YamlFileError(path, f"more than {max_entries:,} entries: far more than {what} holds", *_mark(node))
         if isinstance(node, yaml.MappingNode):
             _no_duplicate_keys(path, node)
         if isinstance(node, (yaml.MappingNode, yaml.SequenceNode)):
@@ -92,7 +92,7 @@ def _check(path: Path, root: yaml.Node, what: str) -> None:
     return None
 
 
-def _check_aliased(path: Path, root: yaml.Node, what: str) -> None:
+def _check_aliased(path: Path, root: yaml.Node, what: str, max_entries: int = MAX_ENTRIES) -> None:
     """As _check, for a tree with aliases: each node is visited once, and an alias counts its node's
     entries and depth again where it is used, so a few hundred bytes that expand a billion times are
     refused at once (and an alias inside what it names, a loop, too)."""
@@ -118,8 +118,8 @@ def _check_aliased(path: Path, root: yaml.Node, what: str) -> None:
         entries = 1 + sum(sizes[id(child)][0] for child in children)
         container = isinstance(node, (yaml.MappingNode, yaml.SequenceNode))
         depth = 1 + max((sizes[id(child)][1] for child in children), default=0) if container else 0
-        if entries > MAX_ENTRIES:
-            raise YamlFileError(path, f"more than {MAX_ENTRIES:,} entries from here down (aliases counted as the "
+        if entries > max_entries:
+            raise YamlFileError(path, f"more than {max_entries:,} entries from here down (aliases counted as the "
                                       f"copies they stand for): far more than {what} holds", *_mark(node))
         if depth > MAX_DEPTH:
             raise YamlFileError(path, f"nested more than {MAX_DEPTH} levels deep from here: far deeper than "
