@@ -30,6 +30,9 @@ class PartStats:
     facility: float | None
     discrimination: float | None
     mistakes: tuple[tuple[str, int], ...] = ()
+    #: answers whose marks review changed (a decision or an alias), and the points that added (or took)
+    reviewed: int = 0
+    review_points: float = 0.0
 
     @property
     def label(self) -> str:
@@ -57,6 +60,13 @@ class Analysis:
     problems: tuple[dict, ...] = ()
     warnings: tuple[str, ...] = ()
     sheet_warnings: tuple[tuple[str, str], ...] = field(default=())
+    #: the decisions file graded with (results.json's "review"), None when there was none
+    review: dict | None = None
+
+    @property
+    def reviewed(self) -> tuple[PartStats, ...]:
+        """Parts where review changed some answer's marks."""
+        return tuple(p for p in self.parts if p.reviewed)
 
     @property
     def mean(self) -> float | None:
@@ -96,6 +106,7 @@ def analyse(record: dict) -> Analysis:
         status_counts=Counter(s["status"] for s in record["sheets"]), percents=percents,
         histogram=histogram(percents), parts=parts, signs=tuple(record.get("signs", ())),
         problems=tuple(record.get("problems", ())), warnings=tuple(record.get("warnings", ())),
+        review=record.get("review") if isinstance(record.get("review"), dict) else None,
     )
 
 
@@ -104,9 +115,18 @@ def _part_stats(slot: str, part_id: str, title: str, rows: list[tuple[dict, dict
     scores = [part["points"] / part["max_points"] if part["max_points"] else 0.0 for _, part in rows]
     rest = [sheet["points"] - part["points"] for sheet, part in rows]
     mistakes = Counter(part["mistake"] for _, part in rows if part.get("mistake"))
+    changes = [part["points"] - part["review"]["points_before"] for _, part in rows if _changed(part)]
     return PartStats(slot, part_id, title, len(rows), statuses,
                      statistics.fmean(scores) if scores else None, point_biserial(scores, rest),
-                     tuple(mistakes.most_common()))
+                     tuple(mistakes.most_common()), len(changes), sum(changes))
+
+
+def _changed(part: dict) -> bool:
+    """Whether review changed this answer's marks (results.json's "review" of a part)."""
+    review = part.get("review")
+    if not isinstance(review, dict) or not isinstance(review.get("points_before"), (int, float)):
+        return False
+    return abs(part["points"] - review["points_before"]) > 1e-12
 
 
 def point_biserial(item: list[float], rest: list[float]) -> float | None:

@@ -13,6 +13,7 @@ import inspect
 from pathlib import Path
 from typing import Callable, Iterable, Iterator, Mapping
 
+from exgen.answertypes import answer_type
 from exgen.errors import ExgenError
 from exgen.issue.assignment import Assignment, Question, Sheet, Student, build_sheet
 from exgen.issue.manifest import Manifest, ManifestError, issue_mismatches
@@ -22,10 +23,12 @@ from exgen.runtime import parallel
 from exgen.solve.variant import Variant
 
 from .answers import Submission
+from .decisions import Decisions
 from .echo import shown
 from .collect import Entry, collect, read_one
 from .marking import QuestionMarker
 from .report import student_page
+from .review import ReviewPlan, plan, summary
 from .results import (GRADED, NO_SUBMISSION, NOT_GRADED, PROBLEM_FILE, UNREADABLE_FILE, BatchResult, Column,
                       FileProblem, QuestionResult, SheetResult)
 
@@ -50,8 +53,9 @@ Progress = Callable[[Iterable, int], Iterable]
 PARALLEL_FROM = 200
 
 
-def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
-    """Grade every part of every question; a differing sheet code is a warning, not a refusal."""
+def grade_sheet(sheet: Sheet, submission: Submission, review: ReviewPlan | None = None) -> SheetResult:
+    """Grade every part of every question, with the review decisions that match applied (graders.review);
+    a differing sheet code is a warning, not a refusal."""
     warnings = list(submission.warnings)
     if submission.code and _norm(submission.code) != _norm(sheet.code):  # graded all the same
         warnings.append(CODE_MISMATCH.format(given=submission.code[:40], code=sheet.code))
@@ -68,9 +72,10 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
         unknown = [k for k in {**given, **trouble} if k and k not in parts]
         if unknown:
             warnings.append(UNKNOWN_PART.format(parts=_listed(unknown, "part"), slot=question.slot))
-        results.append(QuestionMarker(question).mark(
+        marked = QuestionMarker(question, review.aliases_for(question.number) if review else None).mark(
             {parts[k]: v for k, v in given.items() if k in parts},
-            {parts.get(k, k): v for k, v in trouble.items()}))
+            {parts.get(k, k): v for k, v in trouble.items()})
+        results.append(review.apply(sheet.student.id, marked) if review else marked)
     unknown = [k for k in {**answers, **problems} if k not in used]
     if unknown:
         warnings.append(UNKNOWN_QUESTION.format(slots=_listed(unknown, "")))
@@ -81,7 +86,8 @@ def grade_sheet(sheet: Sheet, submission: Submission) -> SheetResult:
 
 def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir: Path, *, secret_source: str = "",
                  force: bool = False, roster: list[Student] | None = None,
-                 progress: Progress | None = None, jobs: int = 1, accept_limits: bool = False) -> BatchResult:
+                 progress: Progress | None = None, jobs: int = 1, accept_limits: bool = False,
+                 decisions: Decisions | None = None) -> BatchResult:
     """Grade the answers to what a manifest records: its questions, its roster (or the part of it given),
     its sheet codes. A different secret, a changed template or solver, or a student never issued a sheet
     stops the run with ManifestError before any mark, unless `force`d (then the batch carries warnings)."""
@@ -92,25 +98,29 @@ def grade_issued(manifest: Manifest, bank: Bank, secret: bytes, submissions_dir:
     if problems and not force:
         raise ManifestError(manifest.path, MISMATCH.format(problems="; ".join(problems)))
     batch = grade_batch(manifest.assignment, bank, secret, submissions_dir, roster=students, progress=progress,
-                        codes=manifest.codes, jobs=jobs, accept_limits=accept_limits)
+                        codes=manifest.codes, jobs=jobs, accept_limits=accept_limits, decisions=decisions)
     return dataclasses.replace(batch, warnings=tuple(FORCED.format(problem=p) for p in problems))
 
 
 def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_dir: Path,
                 roster: list[Student] | Path | None = None, progress: Progress | None = None,
-                codes: dict[str, str] | None = None, jobs: int = 1, accept_limits: bool = False) -> BatchResult:
+                codes: dict[str, str] | None = None, jobs: int = 1, accept_limits: bool = False,
+                decisions: Decisions | None = None) -> BatchResult:
     """Grade every answer file in a directory; one broken file never stops the rest. `codes` are the
     sheet codes issued, by student (from the manifest); without them each sheet's own code is used.
     A folder in which the walk reaches a limit (a student's file may be missed there) raises
     graders.walk.LimitsReached before any file is read, unless `accept_limits`; the batch then carries them.
     With jobs > 1 and at least PARALLEL_FROM files, they are read and graded in that many processes
-    (the same results, in the same order)."""
+    (the same results, in the same order). `decisions` (graders.decisions) are applied where they match;
+    the batch lists those that match nothing graded."""
     if isinstance(roster, (str, Path)):
         roster = load_roster(Path(roster))
-    columns = tuple(Column(i, spec.slot, spec.template, spec.points or bank.get(spec.template).points)
+    columns = tuple(Column(i, spec.slot, spec.template, spec.points or bank.get(spec.template).points,
+                           _kinds(bank.get(spec.template)))
                     for i, spec in enumerate(assignment.questions, start=1))
     max_points = sum(c.max_points for c in columns)
-    shared = (assignment, bank, secret, max_points, codes or {})
+    review = plan(decisions, assignment, bank)
+    shared = (assignment, bank, secret, max_points, codes or {}, review)
     with contextlib.ExitStack() as stack:
         workers = []
 
@@ -126,17 +136,18 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
         if workers:
             graded = _keeping_pages(workers[0].map(_grade_in_worker, entries, chunksize=16), pages)
         else:
-            graded = (_grade_entry(entry, *shared[:-1], shared[-1].get(entry.student.id)) for entry in entries)
+            graded = (_grade_entry(entry, *shared[:4], shared[4].get(entry.student.id), review) for entry in entries)
         sheets = _gather(_with_progress(progress, graded, len(entries)), entries, problems, submissions_dir)
-    return BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages,
-                       limits=tuple(limits))
+    batch = BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages,
+                        limits=tuple(limits))
+    return dataclasses.replace(batch, review=summary(review, batch)) if review else batch
 
 
 def _grade_in_worker(entry: Entry) -> tuple[SheetResult, str]:
     """The sheet graded, and its feedback page written here too: the pages are written in parallel, not
     one after another by the process that writes the results."""
-    assignment, bank, secret, max_points, codes = parallel.shared()
-    result = _grade_entry(entry, assignment, bank, secret, max_points, codes.get(entry.student.id))
+    assignment, bank, secret, max_points, codes, review = parallel.shared()
+    result = _grade_entry(entry, assignment, bank, secret, max_points, codes.get(entry.student.id), review)
     return result, student_page(assignment.title, result)
 
 
@@ -177,7 +188,7 @@ def _with_progress(progress: Progress | None, items: Iterable, total: int) -> It
 
 
 def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes, max_points: float,
-                 code: str | None = None) -> SheetResult:
+                 code: str | None = None, review: ReviewPlan | None = None) -> SheetResult:
     notes = tuple(entry.notes)
     if entry.path is None:  # a note says why, when a file naming the student was found elsewhere
         return SheetResult(entry.student, NO_SUBMISSION, max_points, warnings=notes or (NO_FILE,))
@@ -194,8 +205,12 @@ def _grade_entry(entry: Entry, assignment: Assignment, bank: Bank, secret: bytes
                            path=entry.path)
     if code:  # the code printed on the sheet as issued
         sheet = dataclasses.replace(sheet, code=code)
-    result = grade_sheet(sheet, entry.submission)
+    result = grade_sheet(sheet, entry.submission, review)
     return dataclasses.replace(result, warnings=notes + result.warnings)
+
+
+def _kinds(template) -> tuple[tuple[str, str, tuple[str, ...]], ...]:
+    return tuple((p.id, p.type, tuple(answer_type(p).form_choices(p) or ())) for p in template.parts)
 
 
 def _listed(names: list[str], noun: str) -> str:

@@ -8,6 +8,7 @@ for each kind of answer is its answer type's (exgen.answertypes).
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any, Mapping
 
 from exgen.answertypes import answer_type
@@ -18,9 +19,10 @@ from exgen.load.template import PartSpec
 from exgen.solve.derivation import Derivation
 from exgen.solve.variant import Answer, answer_for, mistakes_for, rerun
 
+from .decisions import Alias, spelling_key
 from .mistakes import generic_mistake, template_mistake
 from .why_not import why_not
-from .results import BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult, QuestionResult
+from .results import ALIAS, BLANK, CARRIED, CORRECT, UNREADABLE, WRONG, PartResult, QuestionResult, Review
 
 NO_ANSWER = "no answer given"
 RIGHT = "correct"
@@ -32,13 +34,18 @@ FORMAT_PROBLEM = "{reason}. This is a format problem, not a wrong answer: {how}.
 WRONG_KIND = "wrong_kind"
 ZERO_FRACTION = 1e-9  # below this fraction of the key, a value counts as zero
 _WORDS_BLANK = ("", "~", "null", "none", "-")
+#: Added to the feedback of an answer read by a spelling accepted in review.
+READ_AS = "Your answer was read as '{means}', a spelling accepted in review"
 
 
 class QuestionMarker:
-    """Marks the parts of one question in order, remembering earlier answers for error carried forward."""
+    """Marks the parts of one question in order, remembering earlier answers for error carried forward.
+    `aliases` are the spellings accepted in review, by part id and spelling_key (graders.review): such an
+    answer is read as what it means, then marked as any other."""
 
-    def __init__(self, question: Question):
+    def __init__(self, question: Question, aliases: Mapping[str, Mapping[str, Alias]] | None = None):
         self.question = question
+        self.aliases = aliases or {}
         self.variant = question.variant
         self.readings: dict[str, Given] = {}  # readable answers of the right kind, by part id
         self.right: set[str] = set()          # parts right against the key itself
@@ -56,7 +63,21 @@ class QuestionMarker:
                               results, self.question.points)
 
     def part(self, part: PartSpec, text: str, problem: str | None = None) -> PartResult:
-        """Grade one part; `problem` is a reason the answer file gave no readable text for it."""
+        """Grade one part; `problem` is a reason the answer file gave no readable text for it. An answer
+        spelled as an alias is marked as what it means, and carries what it would have scored without."""
+        alias = None if problem or is_blank(text) else self.aliases.get(part.id, {}).get(spelling_key(text))
+        if alias is None:
+            return self._part(part, text, problem)
+        readings, right = dict(self.readings), set(self.right)
+        before = self._part(part, text)
+        self.readings, self.right = readings, right  # later parts are worked from the alias's reading
+        after = self._part(part, alias.means)
+        review = Review(ALIAS, before.status, before.points, alias.reviewer, alias.reason, spelling=alias.spelling,
+                        means=alias.means, line=alias.line)
+        message = f"{after.message.rstrip('.')}. {READ_AS.format(means=alias.means)}"
+        return replace(after, given=before.given, message=message, review=review)
+
+    def _part(self, part: PartSpec, text: str, problem: str | None = None) -> PartResult:
         kind = answer_type(part)
         answer = self.variant.answers[part.id]
         result = _Result(part, answer, self.variant.asks.get(part.id, part.ask), text, self.question.scale)

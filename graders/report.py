@@ -183,6 +183,7 @@ def report_page(batch: BatchResult) -> str:
               "| Question | Part | Correct | of which carried | Wrong | Blank | Unreadable | Most common mistakes |",
               "|---|---|---:|---:|---:|---:|---:|---|"]
     lines += _item_rows(batch)
+    lines += _reviewed(batch)
     lines += _not_carried(batch)
     left = [s for s in batch.sheets if s.status != GRADED]
     if left:
@@ -196,6 +197,43 @@ def report_page(batch: BatchResult) -> str:
     lines += [f"- `{_shown(_where(p.path, batch.submissions), 200)}`{' (' + p.student + ')' if p.student else ''}: "
               f"{_escape(p.reason)}" for p in batch.problems] or ["None."]
     return "\n".join(lines) + "\n"
+
+
+def _reviewed(batch: BatchResult) -> list[str]:
+    """The decisions file graded with: per part how many answers' marks review changed, and every decision
+    or alias that matched nothing graded (so changed nothing)."""
+    review = batch.review
+    if review is None:
+        return []
+    lines = ["", "## Review", "",
+             f"Graded with the review decisions in `{_shown(str(review.path), 300)}`: {review.decisions} decision(s), "
+             f"{review.aliases} alias(es).", ""]
+    changed: dict[tuple[int, str, str], list[float]] = {}
+    for sheet in batch.sheets:
+        if sheet.status != GRADED:
+            continue
+        for question in sheet.questions:
+            for part in question.parts:
+                if part.changed_by_review:
+                    changed.setdefault((question.number, question.slot, part.part_id), []).append(
+                        part.points - part.review.points_before)
+    if changed:
+        lines += ["| Question | Part | Answers whose marks review changed | Points |", "|---|---|---:|---:|"]
+        lines += [f"| {slot} | {part} | {len(d)} | {sum(d):+g} |" for (_, slot, part), d in sorted(changed.items())]
+    else:
+        lines.append("No mark was changed by review.")
+    if review.not_applied:
+        lines += ["", "### Not applied", "",
+                  "These match nothing graded (the student handed in something else since, or the question changed), "
+                  "so they changed no mark:", ""]
+        lines += [f"- `{_shown(where_in(review.path, n.line), 300)}`: {_escape(n.what)}: {_escape(n.why, 1000)}"
+                  for n in review.not_applied]
+    return lines
+
+
+def where_in(path, line: int | None) -> str:
+    """'file:12' (or the file alone) for a place in the decisions file."""
+    return f"{path}:{line}" if line else str(path)
 
 
 def _not_carried(batch: BatchResult) -> list[str]:

@@ -26,6 +26,27 @@ PROBLEM_FILE = "problem file"  # a file in the student's place names another stu
 
 
 @dataclass(frozen=True)
+class Review:
+    """How a review decision changed a part (graders.review): `by` a decision on this student's answer or an
+    alias (a spelling accepted for everyone), and the status and points the grader gave before it."""
+
+    by: str  # DECISION | ALIAS
+    status_before: str
+    points_before: float
+    reviewer: str
+    reason: str
+    decision: str = ""   # accept | reject (a decision)
+    comment: str = ""    # what the student reads (a decision)
+    spelling: str = ""   # the spelling read as `means` (an alias)
+    means: str = ""
+    line: int | None = None  # where it is in the decisions file
+
+
+
+DECISION, ALIAS = "decision", "alias"
+
+
+@dataclass(frozen=True)
 class PartResult:
     part_id: str
     ask: str
@@ -42,10 +63,17 @@ class PartResult:
     #: why no credit could be carried forward from the student's wrong earlier answers (the working failed
     #: on them: the exception and where), for the instructor's report; "" when nothing stood in the way
     not_carried: str = ""
+    #: what review changed (graders.review), None if nothing
+    review: Review | None = None
 
     @property
     def correct(self) -> bool:
         return self.status in (CORRECT, CARRIED)
+
+    @property
+    def changed_by_review(self) -> bool:
+        """Whether review changed the part's marks."""
+        return self.review is not None and abs(self.points - self.review.points_before) > 1e-12
 
 
 @dataclass(frozen=True)
@@ -102,6 +130,27 @@ class Column:
     slot: str
     template: str
     max_points: float
+    #: each part's (id, answer type, choices offered): what a reviewer may accept a spelling as
+    kinds: tuple[tuple[str, str, tuple[str, ...]], ...] = ()
+
+
+@dataclass(frozen=True)
+class NotApplied:
+    """A review decision or alias that does not match what was graded, and why: listed, never applied."""
+
+    line: int | None
+    what: str
+    why: str
+
+
+@dataclass(frozen=True)
+class ReviewSummary:
+    """The decisions file a batch was graded with: how many it holds, and those not applied."""
+
+    path: Path
+    decisions: int
+    aliases: int
+    not_applied: tuple[NotApplied, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -114,6 +163,8 @@ class BatchResult:
     warnings: tuple[str, ...] = ()   # about the whole batch (graded with --force although ...)
     #: Limits the walk of the submissions folder reached, graded anyway (--accept-limits): graders.walk.
     limits: tuple[str, ...] = ()
+    #: The review decisions applied (graders.review), None when there were none to apply.
+    review: ReviewSummary | None = None
     #: Feedback pages written where the sheets were graded, in parallel: student id -> (the sheet, its page).
     #: graders.report writes the page of a sheet not here, or replaced since, itself.
     pages: Mapping[str, tuple[SheetResult, str]] = field(default_factory=dict, compare=False, repr=False)

@@ -226,10 +226,12 @@ def cmd_grade(args) -> int:
         else None
     secret, source = _secret(args, recorded, create=False)
     roster = _roster(Path(args.roster)) if args.roster else None
+    decisions = _decisions(args, manifest.assignment.id, submissions)
     from ..issue.generate import default_jobs
 
     batch = grade_issued(manifest, bank, secret, submissions, secret_source=source, force=args.force, roster=roster,
-                         progress=_progress, jobs=args.jobs or default_jobs(), accept_limits=args.accept_limits)
+                         progress=_progress, jobs=args.jobs or default_jobs(), accept_limits=args.accept_limits,
+                         decisions=decisions)
     for warning in batch.warnings:
         print(f"WARNING: {warning}", file=sys.stderr)
     for limit in batch.limits:
@@ -240,8 +242,57 @@ def cmd_grade(args) -> int:
     signs = signs_of_copying(batch, manifest.assignment, bank, secret, manifest.codes)
     paths = write_results(batch, Path(args.out), signs, canvas_id=args.canvas_id or "")
     print(batch.summary())
+    if batch.review is not None:
+        _review_lines(batch.review)
     for name, path in paths.items():
         print(f"{name}: {path}")
+    return 0
+
+
+def _decisions(args, assignment: str, submissions: Path):
+    """The review decisions to grade with: --decisions FILE, else OUT.decisions.yaml if it exists. Never a
+    file among the submissions (a student could write one), nor inside the folder a run replaces."""
+    from graders.decisions import DecisionsError, default_path, load_decisions
+
+    out = Path(args.out)
+    path = Path(args.decisions) if args.decisions else default_path(out)
+    where = path.resolve()
+    for folder, why in ((submissions, "among the submissions, where a student could write it"),
+                        (out, "inside the folder exgen grade replaces, where it would be lost")):
+        if where == folder.resolve() or folder.resolve() in where.parents:
+            raise DecisionsError(path, f"the review decisions file is {why}: keep it beside the output folder "
+                                       f"(the default is {default_path(out)})")
+    return load_decisions(path, assignment, missing_ok=not args.decisions)
+
+
+def _review_lines(review) -> None:
+    """The decisions graded with, and each one that matched nothing graded (so changed no mark)."""
+    from graders.report import where_in
+
+    left = f"; {len(review.not_applied)} not applied (listed in report.md):" if review.not_applied else ""
+    print(f"review: {review.decisions} decision(s) and {review.aliases} alias(es) from {review.path}{left}")
+    for item in review.not_applied:
+        print(f"  not applied: {where_in(review.path, item.line)}: {item.what}: {item.why}", file=sys.stderr)
+
+
+def cmd_decide(args) -> int:
+    from graders.decide import DecideError, accept_spelling, decide_answer
+
+    decisions = Path(args.decisions) if args.decisions else None
+    if args.accept_spelling is not None:
+        if args.means is None:
+            raise DecideError("--accept-spelling needs --means: what the spelling is read as")
+        if args.points is not None or args.comment:
+            raise DecideError("--points and --comment are for --accept and --reject: a spelling is graded as usual")
+        _, done = accept_spelling(Path(args.graded), args.question, args.part, args.accept_spelling, args.means,
+                                  args.reviewer, args.reason, _bank(args), decisions)
+    else:
+        if args.means is not None:
+            raise DecideError("--means is for --accept-spelling")
+        verdict, student = ("accept", args.accept) if args.accept is not None else ("reject", args.reject)
+        _, done = decide_answer(Path(args.graded), verdict, student.strip(), args.question, args.part, args.reviewer,
+                                args.reason, args.points, args.comment, decisions)
+    print(done)
     return 0
 
 

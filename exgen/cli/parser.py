@@ -4,7 +4,7 @@ from __future__ import annotations
 import argparse
 
 from .. import __version__
-from .commands import (SEED_MAX, cmd_export, cmd_generate, cmd_grade, cmd_list, cmd_practice,
+from .commands import (SEED_MAX, cmd_decide, cmd_export, cmd_generate, cmd_grade, cmd_list, cmd_practice,
                        cmd_report, cmd_serve, cmd_show, cmd_solve, cmd_validate)
 
 
@@ -21,6 +21,17 @@ def _count(minimum: int, maximum: int | None = None):
         return value
 
     return parse
+
+
+def _points(text: str) -> float:
+    """An argparse type: a finite number of points, 0 or more."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of points") from None
+    if not (value >= 0 and value != float("inf")):
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of points, 0 or more")
+    return value
 
 
 def _digits(text: str) -> str:
@@ -144,7 +155,40 @@ def build_parser() -> argparse.ArgumentParser:
                         "and exits with status 1")
     p.add_argument("--canvas-id", type=_digits, help="the Canvas assignment's id, for the Canvas gradebook's column "
                                                      "(without it, importing makes a new assignment)")
+    p.add_argument("--decisions", metavar="FILE", help="the review decisions to apply (default: OUT.decisions.yaml "
+                                                       "beside the output folder, if there is one; `exgen decide` "
+                                                       "writes it)")
     p.set_defaults(func=cmd_grade)
+
+    p = _command(sub, "decide", "write a review decision: accept a spelling for everyone, or one student's answer",
+                 "Write a review decision into the decisions file beside a graded folder (GRADED.decisions.yaml),\n"
+                 "which `exgen grade` applies on every run: a spelling accepted for everyone on one part (read as\n"
+                 "one of the part's choices, then graded against each student's own key), or one student's answer\n"
+                 "accepted (full marks, or --points) or rejected, for the text they gave only. Checked against the\n"
+                 "graded run first; nothing is written if the part, the choice or the student is not there.",
+                 "exgen decide graded/tutorial1 --accept-spelling raises --question 3 --part b \\\n"
+                 "      --means \"raises the bow\" --reviewer \"A. Lecturer\" --reason \"the wording invites it\"",
+                 "exgen decide graded/tutorial1 --accept A21001 --question 1 --part a --points 1.5 \\\n"
+                 "      --comment \"the direction is not asked\" --reviewer \"A. Lecturer\" --reason \"unit right\"")
+    p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
+    which = p.add_mutually_exclusive_group(required=True)
+    which.add_argument("--accept-spelling", metavar="TEXT", help="accept this spelling for everyone (with --means)")
+    which.add_argument("--accept", metavar="STUDENT", help="accept this student's answer as graded")
+    which.add_argument("--reject", metavar="STUDENT", help="reject this student's answer as graded (0 points)")
+    p.add_argument("--question", type=_count(1, 1000), required=True, metavar="N",
+                   help="the question's number, as on the sheet")
+    p.add_argument("--part", required=True, help="the part's letter (a, b, ...)")
+    p.add_argument("--means", metavar="TEXT", help="what the spelling is read as: one of the part's choices, or "
+                                                   "an answer the part reads")
+    p.add_argument("--points", type=_points, metavar="X", help="with --accept: the points given (default: the "
+                                                             "part's full marks)")
+    p.add_argument("--comment", default="", help="what the student reads on their feedback: \"marked by hand: "
+                                                 "COMMENT\"")
+    p.add_argument("--reviewer", required=True, metavar="NAME", help="who decided")
+    p.add_argument("--reason", required=True, metavar="TEXT", help="why (for the record and the report)")
+    p.add_argument("--decisions", metavar="FILE", help="the decisions file (default: GRADED.decisions.yaml "
+                                                       "beside the folder)")
+    p.set_defaults(func=cmd_decide)
 
     p = _command(sub, "practice", "practise alone in the terminal: a problem at a time, checked as you go",
                  "Practise alone: fresh problems from where you are weakest, each part checked\n"
