@@ -249,3 +249,70 @@ def test_a_huge_decisions_file_is_refused(course, reviewed, monkeypatch, capsys)
         handle.truncate(64 * 1024 * 1024)
     status, _, err = grade(course, reviewed["handed"], reviewed["out"], monkeypatch, capsys)
     assert status == 1 and str(decisions) in err and "allowed" in err and len(err.strip().splitlines()) == 1
+
+
+# ---- exgen decide: checked against the graded run before the file is touched ---------------------------------
+
+@pytest.fixture
+def graded(course, tmp_path, monkeypatch, capsys):
+    out = tmp_path / "graded" / "review-demo"
+    assert grade(course, hand_in(course, tmp_path / "handed"), out, monkeypatch, capsys)[0] == 0
+    return out
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--accept-spelling", "raises", "--question", 2, "--part", "z", "--means", "raises the bow"],
+     "question 2 (gyroscopes.ship_turbine) has no part (z): its parts are a, b, c, d, e, f"),
+    (["--accept-spelling", "raises", "--question", 9, "--part", "b", "--means", "raises the bow"],
+     "there is no question 9: the assignment has questions 1 to 2"),
+    (["--accept-spelling", "raises", "--question", 2, "--part", "b", "--means", "raises the stern"],
+     "--means 'raises the stern' is not one of the part's choices (raises the bow, lowers the bow)"),
+    (["--accept-spelling", "fast", "--question", 1, "--part", "a", "--means", "very fast"],
+     "--means 'very fast' is not an answer the part reads"),
+    (["--accept", "Z999", "--question", 1, "--part", "a"], "no student Z999 in this class"),
+    (["--accept", "S001", "--question", 1, "--part", "a", "--points", 99], "--points 99 is outside 0 to"),
+    (["--reject", "S001", "--question", 1, "--part", "a", "--points", 1], "--points is for --accept"),
+    (["--accept-spelling", "raises", "--question", 2, "--part", "b"], "--accept-spelling needs --means"),
+    (["--accept", "S001", "--question", 1, "--part", "a", "--means", "x"], "--means is for --accept-spelling"),
+])
+def test_decide_refuses_what_the_graded_run_does_not_hold_in_one_line(graded, capsys, argv, words):
+    assert decide(graded, *argv) == 1
+    err = capsys.readouterr().err
+    assert words in err and len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    assert not graded.with_name("review-demo.decisions.yaml").exists()
+
+
+def test_decide_refuses_a_student_who_handed_nothing_in(course, tmp_path, monkeypatch, capsys):
+    handed = hand_in(course, tmp_path / "handed")
+    (handed / "S001.yaml").unlink()
+    out = tmp_path / "graded"
+    assert grade(course, handed, out, monkeypatch, capsys)[0] == 0
+    assert decide(out, "--accept", "S001", "--question", 1, "--part", "a") == 1
+    assert "S001's answers were not graded (no submission)" in capsys.readouterr().err
+
+
+def test_decide_replaces_the_decision_on_the_same_part_and_says_so(graded, capsys):
+    assert decide(graded, "--accept", "S001", "--question", 1, "--part", "(A)", "--points", 1) == 0
+    assert decide(graded, "--reject", "S001", "--question", 1, "--part", "a", "--comment", "no  unit") == 0
+    said = capsys.readouterr().out
+    assert "rejected S001's answer" in said and "(replacing the earlier decision)" in said
+    from graders.decisions import load_decisions
+
+    (decision,) = load_decisions(graded.with_name("review-demo.decisions.yaml"), "review-demo").decisions
+    assert (decision.decision, decision.points, decision.comment, decision.template) == \
+        ("reject", None, "no unit", "belts.driven_speed_slip")
+
+
+def test_grading_in_worker_processes_applies_the_same_decisions(course, reviewed, bank, monkeypatch):
+    """A large class is graded in worker processes: the decisions reach them, and the marks are the same."""
+    import graders.grade as grading
+    from graders.decisions import load_decisions
+    from graders.record import batch_record
+
+    manifest = read_manifest(course["root"] / "issued")
+    decisions = load_decisions(reviewed["out"].with_name("review-demo.decisions.yaml"), "review-demo")
+    alone = grading.grade_issued(manifest, bank, SECRET.encode(), reviewed["handed"], decisions=decisions)
+    monkeypatch.setattr(grading, "PARALLEL_FROM", 2)
+    shared = grading.grade_issued(manifest, bank, SECRET.encode(), reviewed["handed"], decisions=decisions, jobs=2)
+    assert batch_record(shared) == batch_record(alone)
+    assert sum(p.review is not None for s in shared.sheets for q in s.questions for p in q.parts) == 4
