@@ -98,6 +98,11 @@ def reading_problem(means: str, part) -> str | None:
 
 def decision_problem(decision: Decision, template: str, part: PartResult) -> str | None:
     """Why a decision does not hold for this graded part, or None."""
+    if decision.matches(template, part.given):
+        if decision.decision == ACCEPT and decision.points is not None and \
+                decision.points > part.max_points + EPSILON:
+            return f"it gives {decision.points:g} points, more than the part's {part.max_points:g}"
+        return None
     if decision.template and decision.template != template:
         return f"the question is now {template}, not {decision.template} the decision was made for"
     now = cleaned(part.given)
@@ -105,8 +110,6 @@ def decision_problem(decision: Decision, template: str, part: PartResult) -> str
         then = shown(decision.answer, 60) if decision.answer else "(blank)"
         return (f"the answer is now '{shown(now, 60)}'" if now else "the answer is now blank") + \
             f", not '{then}' the decision was made on"
-    if decision.decision == ACCEPT and decision.points is not None and decision.points > part.max_points + EPSILON:
-        return f"it gives {decision.points:g} points, more than the part's {part.max_points:g}"
     return None
 
 

@@ -4,6 +4,7 @@ student, then grading again, changes exactly those marks, and every output of a 
 byte for byte. A decision on an answer that has changed since is listed and not applied; a broken decisions
 file stops grading in one line and loses nothing."""
 import csv
+import re
 import io
 import json
 from pathlib import Path
@@ -316,3 +317,49 @@ def test_grading_in_worker_processes_applies_the_same_decisions(course, reviewed
     shared = grading.grade_issued(manifest, bank, SECRET.encode(), reviewed["handed"], decisions=decisions, jobs=2)
     assert batch_record(shared) == batch_record(alone)
     assert sum(p.review is not None for s in shared.sheets for q in s.questions for p in q.parts) == 4
+
+
+def test_every_decision_that_matches_nothing_is_listed_with_why_and_changes_no_mark(course, graded, monkeypatch,
+                                                                                    capsys):
+    """Written by hand: a question, part, template, student, choice or number of points the run does not have."""
+    handed = graded.parent.parent / "handed"
+    first, first_marks = files(graded), marks(graded)
+    student = course["planted"]["direction"][0]
+    given = json.loads((graded / "results.json").read_text())["sheets"]
+    text = next(p["given"] for s in given if s["student"]["id"] == student for p in s["parts"]
+                if (p["slot"], p["part"]) == ("q1", "a"))
+
+    def decision(**fields):
+        base = {"student": student, "question": 1, "part": "a", "answer": text, "decision": "accept",
+                "reviewer": "me", "reason": "why"}
+        return {**base, **fields}
+
+    def alias(**fields):
+        base = {"question": 2, "part": "b", "template": "gyroscopes.ship_turbine", "spelling": "raises",
+                "means": "raises the bow", "reviewer": "me", "reason": "why"}
+        return {**base, **fields}
+
+    wrong = {"decisions": [decision(question=7), decision(part="z"), decision(student="Z999"),
+                           decision(template="belts.flat_belt_power", student=course["planted"]["alias_wrong"][0]),
+                           decision(points=99)],
+             "aliases": [alias(template="belts.flat_belt_power"), alias(part="z"), alias(means="sideways", spelling="up"),
+                         alias(question=5)]}
+    path = graded.with_name("review-demo.decisions.yaml")
+    path.write_text(yaml.safe_dump({"assignment": "review-demo", **wrong}, sort_keys=False), encoding="utf-8")
+    status, said, err = grade(course, handed, graded, monkeypatch, capsys)
+    assert status == 0 and "9 not applied" in said, err
+    for why in ("the assignment has no question 7 (it has 2)", "question 1 (belts.driven_speed_slip) has no part (z)",
+                "no student Z999 in this class", "the question is now belts.driven_speed_slip, not belts.flat_belt_power",
+                "it gives 99 points, more than the part's", "question 2 is now gyroscopes.ship_turbine, not "
+                "belts.flat_belt_power", "question 2 (gyroscopes.ship_turbine) has no part (z)",
+                "'sideways' is not one of the part's choices (raises the bow, lowers the bow)",
+                "the assignment has no question 5 (it has 2)"):
+        assert why in err, why
+    assert all(re.search(rf"{re.escape(str(path))}:\d+: ", line) for line in err.splitlines() if "not applied" in line)
+    after = files(graded)
+    for name in ("gradebook.csv", "canvas_gradebook.csv", "moodle_grades.csv", "parts.csv"):
+        assert after[name] == first[name], name
+    assert marks(graded) == first_marks
+    record = json.loads((graded / "results.json").read_text())
+    assert all(p["review"] is None for s in record["sheets"] for p in s["parts"])
+    assert len(record["review"]["not_applied"]) == 9
