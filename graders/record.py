@@ -72,6 +72,7 @@ def _summary(summary: ReviewSummary | None) -> dict | None:
     if summary is None:
         return None
     return {"file": _path(summary.path), "decisions": summary.decisions, "aliases": summary.aliases,
+            "applied": summary.applied,
             "not_applied": [{"line": n.line, "what": shown(n.what, 200), "why": shown(n.why, 1000)}
                             for n in summary.not_applied]}
 

@@ -207,7 +207,7 @@ def _reviewed(batch: BatchResult) -> list[str]:
         return []
     lines = ["", "## Review", "",
              f"Graded with the review decisions in `{_shown(str(review.path), 300)}`: {review.decisions} decision(s), "
-             f"{review.aliases} alias(es).", ""]
+             f"{review.aliases} alias(es), which marked {review.applied} answer(s).", ""]
     changed: dict[tuple[int, str, str], list[float]] = {}
     for sheet in batch.sheets:
         if sheet.status != GRADED:

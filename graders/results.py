@@ -145,12 +145,14 @@ class NotApplied:
 
 @dataclass(frozen=True)
 class ReviewSummary:
-    """The decisions file a batch was graded with: how many it holds, and those not applied."""
+    """The decisions file a batch was graded with: how many it holds, how many answers they marked, and
+    those not applied."""
 
     path: Path
     decisions: int
     aliases: int
     not_applied: tuple[NotApplied, ...] = ()
+    applied: int = 0  # graded answers a decision or an alias marked
 
 
 @dataclass(frozen=True)

@@ -158,7 +158,9 @@ def summary(review: ReviewPlan | None, batch: BatchResult) -> ReviewSummary | No
     if review is None:
         return None
     decisions = review.decisions
-    return ReviewSummary(decisions.path, len(decisions.decisions), len(decisions.aliases), not_applied(review, batch))
+    applied = sum(p.review is not None for s in batch.sheets for q in s.questions for p in q.parts)
+    return ReviewSummary(decisions.path, len(decisions.decisions), len(decisions.aliases), not_applied(review, batch),
+                         applied)
 
 
 def _decision_name(d: Decision) -> str:
