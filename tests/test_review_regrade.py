@@ -364,3 +364,13 @@ def test_every_decision_that_matches_nothing_is_listed_with_why_and_changes_no_m
     record = json.loads((graded / "results.json").read_text())
     assert all(p["review"] is None for s in record["sheets"] for p in s["parts"])
     assert len(record["review"]["not_applied"]) == 9
+
+
+def test_a_hostile_comment_reaches_the_feedback_harmless(course, graded, monkeypatch, capsys):
+    student = course["planted"]["direction"][0]
+    comment = "<script>alert(1)</script> `code` [link](http://x) \u202eevil &lt;"
+    assert decide(graded, "--accept", student, "--question", 1, "--part", "a", "--comment", comment) == 0
+    assert grade(course, graded.parent.parent / "handed", graded, monkeypatch, capsys)[0] == 0
+    page = (graded / "feedback" / f"{student}.md").read_text(encoding="utf-8")
+    line = next(text for text in page.splitlines() if "Marked by hand" in text)
+    assert "<" not in line and "\u202e" not in line and "`" not in line and "&lt;" not in line
