@@ -123,6 +123,29 @@ def decide_answer(graded: Path, verdict: str, student: str, question: int, part:
                   + GRADE_AGAIN.format(graded=graded))
 
 
+def withdraw(graded: Path, question: int, part: str, student: str | None = None, spelling: str | None = None,
+             path: Path | None = None) -> tuple[Path, str]:
+    """Take back the decision on a student's part, or the alias for a spelling of a part. (the file, what was
+    done)"""
+    record = read_record(Path(graded))
+    file, decisions = _file(graded, path, record)
+    part_id = part.strip().strip("().").strip().lower()
+    if student is not None:
+        if decisions.decision_for(student, question, part_id) is None:
+            raise DecideError(f"{file}: there is no decision on {shown(student, 40)}'s question {question} "
+                              f"({shown(part_id, 20)})")
+        left, what = decisions.without_decision(student, question, part_id), \
+            f"the decision on {student}'s question {question} ({part_id})"
+    else:
+        left = decisions.without_alias(question, part_id, spelling or "")
+        if left == decisions:
+            raise DecideError(f"{file}: there is no alias for '{shown(spelling, 60)}' on question {question} "
+                              f"({shown(part_id, 20)})")
+        what = f"the spelling '{shown(spelling, 60)}' on question {question} ({part_id})"
+    save_decisions(left, file)
+    return file, f"withdrew {what}, in {file}; " + GRADE_AGAIN.format(graded=graded)
+
+
 def _listed(means: str, choices: list) -> str:
     """A choice written as listed ('Raises the bow' -> 'raises the bow'); other text as typed, on one line."""
     means = " ".join(str(means).split())

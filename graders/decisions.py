@@ -130,6 +130,15 @@ class Decisions:
         kept = [a for a in self.aliases if a.key != alias.key]
         return replace(self, aliases=_sorted_aliases(kept + [alias]))
 
+    def without_decision(self, student: str, question: int, part: str) -> Decisions:
+        """These decisions without the one on this student's part (the same if there is none)."""
+        return replace(self, decisions=tuple(d for d in self.decisions if d.key != (student, question, part)))
+
+    def without_alias(self, question: int, part: str, spelling: str) -> Decisions:
+        """These decisions without the alias for this spelling of the part (the same if there is none)."""
+        key = (question, part, spelling_key(spelling))
+        return replace(self, aliases=tuple(a for a in self.aliases if a.key != key))
+
     @property
     def _decisions(self) -> dict[tuple[str, int, str], Decision]:
         table = self.__dict__.get("_table")
@@ -171,8 +180,6 @@ def load_decisions(path: Path, assignment: str | None = None, *, missing_ok: boo
         raise DecisionsError(path, "no such file")
     try:
         root, data = read_yaml(path, WHAT, max_bytes=MAX_BYTES, max_entries=MAX_ENTRIES)
-    except DecisionsError:
-        raise
     except YamlFileError as exc:
         raise DecisionsError(path, exc.detail, exc.line, exc.column) from None
     reader = _Reader(path, root)

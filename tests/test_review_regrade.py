@@ -374,3 +374,22 @@ def test_a_hostile_comment_reaches_the_feedback_harmless(course, graded, monkeyp
     page = (graded / "feedback" / f"{student}.md").read_text(encoding="utf-8")
     line = next(text for text in page.splitlines() if "Marked by hand" in text)
     assert "<" not in line and "\u202e" not in line and "`" not in line and "&lt;" not in line
+
+
+def test_a_decision_and_an_alias_can_be_withdrawn(course, graded, monkeypatch, capsys):
+    first = marks(graded)
+    handed = graded.parent.parent / "handed"
+    student = course["planted"]["direction"][0]
+    assert decide(graded, "--accept", student, "--question", 1, "--part", "a") == 0
+    assert decide(graded, "--accept-spelling", "raises", "--question", 2, "--part", "b", "--means", "raises the bow") == 0
+    assert grade(course, handed, graded, monkeypatch, capsys)[0] == 0
+    assert marks(graded) != first
+    assert main(["decide", str(graded), "--withdraw", student, "--question", "1", "--part", "a"]) == 0
+    assert main(["decide", str(graded), "--withdraw-spelling", " RAISES", "--question", "2", "--part", "b"]) == 0
+    assert "withdrew the spelling 'RAISES' on question 2 (b)" in capsys.readouterr().out
+    assert main(["decide", str(graded), "--withdraw", student, "--question", "1", "--part", "a"]) == 1
+    assert f"there is no decision on {student}'s question 1 (a)" in capsys.readouterr().err
+    assert main(["decide", str(graded), "--accept", student, "--question", "1", "--part", "a"]) == 1
+    assert "--reviewer is required" in capsys.readouterr().err
+    assert grade(course, handed, graded, monkeypatch, capsys)[0] == 0
+    assert marks(graded) == first

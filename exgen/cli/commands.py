@@ -277,9 +277,21 @@ def _review_lines(review) -> None:
 
 
 def cmd_decide(args) -> int:
-    from graders.decide import DecideError, accept_spelling, decide_answer
+    from graders.decide import DecideError, accept_spelling, decide_answer, withdraw
 
     decisions = Path(args.decisions) if args.decisions else None
+    withdrawing = args.withdraw is not None or args.withdraw_spelling is not None
+    given = [name for name in ("means", "points", "reviewer", "reason") if getattr(args, name) is not None]
+    if withdrawing:
+        if given or args.comment:
+            raise DecideError(f"--{(given or ['comment'])[0]} is not for withdrawing a decision")
+        _, done = withdraw(Path(args.graded), args.question, args.part, args.withdraw, args.withdraw_spelling,
+                           decisions)
+        print(done)
+        return 0
+    missing = [name for name in ("reviewer", "reason") if getattr(args, name) is None]
+    if missing:
+        raise DecideError(f"--{missing[0]} is required: every decision says who made it and why")
     if args.accept_spelling is not None:
         if args.means is None:
             raise DecideError("--accept-spelling needs --means: what the spelling is read as")

@@ -175,6 +175,8 @@ def build_parser() -> argparse.ArgumentParser:
     which.add_argument("--accept-spelling", metavar="TEXT", help="accept this spelling for everyone (with --means)")
     which.add_argument("--accept", metavar="STUDENT", help="accept this student's answer as graded")
     which.add_argument("--reject", metavar="STUDENT", help="reject this student's answer as graded (0 points)")
+    which.add_argument("--withdraw", metavar="STUDENT", help="take back the decision on this student's part")
+    which.add_argument("--withdraw-spelling", metavar="TEXT", help="take back the spelling accepted for the part")
     p.add_argument("--question", type=_count(1, 1000), required=True, metavar="N",
                    help="the question's number, as on the sheet")
     p.add_argument("--part", required=True, help="the part's letter (a, b, ...)")
@@ -184,8 +186,8 @@ def build_parser() -> argparse.ArgumentParser:
                                                              "part's full marks)")
     p.add_argument("--comment", default="", help="what the student reads on their feedback: \"marked by hand: "
                                                  "COMMENT\"")
-    p.add_argument("--reviewer", required=True, metavar="NAME", help="who decided")
-    p.add_argument("--reason", required=True, metavar="TEXT", help="why (for the record and the report)")
+    p.add_argument("--reviewer", metavar="NAME", help="who decided (required but to withdraw)")
+    p.add_argument("--reason", metavar="TEXT", help="why, for the record and the report (required but to withdraw)")
     p.add_argument("--decisions", metavar="FILE", help="the decisions file (default: GRADED.decisions.yaml "
                                                        "beside the folder)")
     p.set_defaults(func=cmd_decide)
