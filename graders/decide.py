@@ -15,7 +15,7 @@ from exgen.load.bank import Bank
 from .decisions import (ACCEPT, COMMENT_LENGTH, REJECT, TEXT_LENGTH, Alias, Decision, Decisions, cleaned,
                         default_path, load_decisions, save_decisions, spelling_key)
 from .echo import shown
-from .record import read_record
+from .record import RESULTS, read_record
 from .review import reading_problem
 
 GRADE_AGAIN = "grade again to apply it (exgen grade ISSUED SUBMISSIONS --out {graded})"
@@ -44,19 +44,36 @@ class Target:
 
 def target(graded: Path, question: int, part: str) -> Target:
     """The column and part of question `question` in the run in `graded`, or DecideError."""
-    record = read_record(Path(graded))
-    columns = record.get("columns", [])
+    record = _checked(read_record(Path(graded)), graded)
+    columns = record["columns"]
     column = next((c for c in columns if c.get("number") == question), None)
     if column is None:
         raise DecideError(f"{graded}: there is no question {question}: the assignment has questions 1 to "
                           f"{len(columns)}")
     wanted = part.strip().strip("().").strip().lower()
-    found = next((p for p in column.get("parts", []) if str(p.get("id", "")).lower() == wanted), None)
+    found = next((p for p in column["parts"] if p["id"].lower() == wanted), None)
     if found is None:
-        ids = ", ".join(str(p.get("id")) for p in column.get("parts", []))
-        raise DecideError(f"{graded}: question {question} ({column.get('template')}) has no part "
+        ids = ", ".join(p["id"] for p in column["parts"])
+        raise DecideError(f"{graded}: question {question} ({column['template']}) has no part "
                           f"({shown(part, 20)}): its parts are {ids or 'none'}")
     return Target(record, column, found)
+
+
+def _checked(record: dict, graded: Path) -> dict:
+    """results.json as exgen grade writes it, in what a decision reads (it may have been edited by hand)."""
+    def fields(item, **kinds) -> bool:
+        return isinstance(item, dict) and all(isinstance(item.get(k), t) and not isinstance(item.get(k), bool)
+                                              for k, t in kinds.items())
+
+    ok = fields(record, assignment=dict, columns=list, sheets=list) and fields(record["assignment"], id=str) \
+        and all(fields(c, number=int, slot=str, template=str, parts=list)
+                and all(fields(p, id=str, max_points=(int, float)) for p in c["parts"]) for c in record["columns"]) \
+        and all(fields(s, student=dict, status=str, parts=list) and fields(s["student"], id=str)
+                and all(fields(p, slot=str, part=str, max_points=(int, float)) for p in s["parts"])
+                for s in record["sheets"])
+    if not ok:
+        raise DecideError(f"{Path(graded) / RESULTS}: not grading results as exgen grade writes them; grade again")
+    return record
 
 
 def _file(graded: Path, path: Path | None, record: dict) -> tuple[Path, Decisions]:
@@ -71,7 +88,8 @@ def accept_spelling(graded: Path, question: int, part: str, spelling: str, means
     template = where.column["template"]
     if not spelling_key(spelling):
         raise DecideError("--accept-spelling is blank: give the spelling students wrote")
-    means = _listed(means, where.part.get("choices") or [])
+    choices = where.part.get("choices")
+    means = _listed(means, [c for c in choices if isinstance(c, str)] if isinstance(choices, list) else [])
     spec = next((p for p in bank.get(template).parts if p.id == where.part["id"]), None)
     if spec is None:
         raise DecideError(f"{template} has no part ({where.part['id']}) any more: grade again first")
@@ -94,7 +112,7 @@ def decide_answer(graded: Path, verdict: str, student: str, question: int, part:
                   points: float | None = None, comment: str = "", path: Path | None = None) -> tuple[Path, str]:
     """Write a decision on one student's answer as graded in `graded`. (the file, what was done)"""
     where = target(graded, question, part)
-    sheet = next((s for s in where.record.get("sheets", []) if s.get("student", {}).get("id") == student), None)
+    sheet = next((s for s in where.record["sheets"] if s["student"]["id"] == student), None)
     if sheet is None:
         raise DecideError(f"{graded}: no student {shown(student, 40)} in this class")
     if sheet.get("status") != "graded":
@@ -127,7 +145,7 @@ def withdraw(graded: Path, question: int, part: str, student: str | None = None,
              path: Path | None = None) -> tuple[Path, str]:
     """Take back the decision on a student's part, or the alias for a spelling of a part. (the file, what was
     done)"""
-    record = read_record(Path(graded))
+    record = _checked(read_record(Path(graded)), graded)
     file, decisions = _file(graded, path, record)
     part_id = part.strip().strip("().").strip().lower()
     if student is not None:

@@ -393,3 +393,22 @@ def test_a_decision_and_an_alias_can_be_withdrawn(course, graded, monkeypatch, c
     assert "--reviewer is required" in capsys.readouterr().err
     assert grade(course, handed, graded, monkeypatch, capsys)[0] == 0
     assert marks(graded) == first
+
+
+@pytest.mark.parametrize("edit", [
+    lambda r: r.pop("columns"),
+    lambda r: r.update(assignment=["x"]),
+    lambda r: r["columns"][0].update(parts="abc"),
+    lambda r: r["sheets"][0].update(student=None),
+    lambda r: r["sheets"][0]["parts"][0].update(max_points="2"),
+])
+def test_decide_on_results_edited_by_hand_is_one_line(graded, capsys, edit):
+    record = json.loads((graded / "results.json").read_text(encoding="utf-8"))
+    edit(record)
+    (graded / "results.json").write_text(json.dumps(record), encoding="utf-8")
+    for argv in (["--accept", "S001"], ["--accept-spelling", "up", "--means", "raises the bow"], ["--withdraw", "S001"]):
+        argv += ["--question", 2, "--part", "b"]
+        status = main(["decide", str(graded), *map(str, argv)] + ([] if "--withdraw" in argv else
+                                                                  ["--reviewer", "me", "--reason", "why"]))
+        err = capsys.readouterr().err
+        assert status == 1 and "not grading results as exgen grade writes them" in err and len(err.splitlines()) == 1
