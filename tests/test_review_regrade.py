@@ -294,7 +294,7 @@ def test_decide_refuses_a_student_who_handed_nothing_in(course, tmp_path, monkey
 
 
 def test_decide_replaces_the_decision_on_the_same_part_and_says_so(graded, capsys):
-    assert decide(graded, "--accept", "S001", "--question", 1, "--part", "(A)", "--points", 1) == 0
+    assert decide(graded, "--accept", "s001", "--question", 1, "--part", "(A)", "--points", 1) == 0
     assert decide(graded, "--reject", "S001", "--question", 1, "--part", "a", "--comment", "no  unit") == 0
     said = capsys.readouterr().out
     assert "rejected S001's answer" in said and "(replacing the earlier decision)" in said
