@@ -136,7 +136,9 @@ def grade_batch(assignment: Assignment, bank: Bank, secret: bytes, submissions_d
         if workers:
             graded = _keeping_pages(workers[0].map(_grade_in_worker, entries, chunksize=16), pages)
         else:
-            graded = (_grade_entry(entry, *shared[:4], shared[4].get(entry.student.id), review) for entry in entries)
+            issued = codes or {}
+            graded = (_grade_entry(entry, assignment, bank, secret, max_points, issued.get(entry.student.id), review)
+                      for entry in entries)
         sheets = _gather(_with_progress(progress, graded, len(entries)), entries, problems, submissions_dir)
     batch = BatchResult(assignment, columns, tuple(sheets), tuple(problems), Path(submissions_dir), pages=pages,
                         limits=tuple(limits))
