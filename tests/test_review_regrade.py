@@ -169,8 +169,8 @@ def test_report_and_item_analysis_count_the_marks_review_changed_per_part(review
     analysis = (reviewed["out"] / "item-analysis.md").read_text(encoding="utf-8")
     assert "## Changed by review" in analysis and "q2 (b)" in analysis.split("## Changed by review")[1]
     assert "Changed by review" in (reviewed["out"] / "item-analysis.html").read_text(encoding="utf-8")
-    assert "review: 1 decision(s) and 1 alias(es) from" in reviewed["said"]
-    assert "marked 4 answer(s)" in reviewed["said"] and "which marked 4 answer(s)" in report
+    assert ": 1 decision(s) and 1 alias(es), which marked 4 answer(s)" in reviewed["said"]
+    assert "which marked 4 answer(s)" in report
 
 
 def test_results_json_records_what_review_did_for_the_review_page(course, reviewed):

@@ -270,7 +270,7 @@ def _review_lines(review) -> None:
     from graders.report import where_in
 
     left = f"; {len(review.not_applied)} not applied (listed in report.md):" if review.not_applied else ""
-    print(f"review: {review.decisions} decision(s) and {review.aliases} alias(es) from {review.path} marked "
+    print(f"review: {review.path}: {review.decisions} decision(s) and {review.aliases} alias(es), which marked "
           f"{review.applied} answer(s){left}")
     for item in review.not_applied:
         print(f"  not applied: {where_in(review.path, item.line)}: {item.what}: {item.why}", file=sys.stderr)

@@ -166,10 +166,10 @@ def build_parser() -> argparse.ArgumentParser:
                  "one of the part's choices, then graded against each student's own key), or one student's answer\n"
                  "accepted (full marks, or --points) or rejected, for the text they gave only. Checked against the\n"
                  "graded run first; nothing is written if the part, the choice or the student is not there.",
-                 "exgen decide graded/tutorial1 --accept-spelling raises --question 3 --part b \\\n"
+                 "exgen decide graded/tutorial5 --accept-spelling raises --question 2 --part b \\\n"
                  "      --means \"raises the bow\" --reviewer \"A. Lecturer\" --reason \"the wording invites it\"",
-                 "exgen decide graded/tutorial1 --accept A21001 --question 1 --part a --points 1.5 \\\n"
-                 "      --comment \"the direction is not asked\" --reviewer \"A. Lecturer\" --reason \"unit right\"")
+                 "exgen decide graded/tutorial5 --accept A21001 --question 2 --part a --points 0.5 \\\n"
+                 "      --comment \"the sense is asked in (b)\" --reviewer \"A. Lecturer\" --reason \"value right\"")
     p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
     which = p.add_mutually_exclusive_group(required=True)
     which.add_argument("--accept-spelling", metavar="TEXT", help="accept this spelling for everyone (with --means)")
