@@ -207,6 +207,43 @@ def inline_engine_unbalance(v):
     return answers, mistakes
 
 
+def inline_engine_directions(v):
+    """Every polygon open: each size with the direction that closes it, and the slips on both."""
+    g = printed(v, "theta1", "theta2", "theta3", "theta4", "m", "r", "l", "a", "N")
+    angles = [g.theta1, g.theta2, g.theta3, g.theta4]
+    x = centred(4, g.a)
+    n = g.l / g.r
+    primary = g.m * g.r * g.N ** 2
+    as_rpm = (1 / RPM) ** 2
+
+    def vectors(positions, harmonic: int):
+        """(force vector, couple vector) of the cranks at harmonic × θ, with distances `positions`."""
+        size = primary / (n if harmonic == 2 else 1)
+        return (clean(size * sum(e(harmonic * a) for a in angles), 4 * size),
+                clean(size * sum(p * e(harmonic * a) for p, a in zip(positions, angles)),
+                      size * sum(map(abs, positions))))
+
+    right = {1: vectors(x, 1), 2: vectors(x, 2)}
+    end = {h: vectors([p - x[0] for p in x], h)[1] for h in (1, 2)}
+    lost = {h: vectors([abs(p) for p in x], h)[1] for h in (1, 2)}
+    undoubled = vectors(x, 1)
+    answers, mistakes = {}, {}
+    for part, harmonic, which in (("a", 1, 0), ("b", 1, 1), ("c", 2, 0), ("d", 2, 1)):
+        balance = closing(right[harmonic][which])
+        answers[part] = balance
+        wrong = {"resultant_not_balance": turned(balance), "rpm_as_rad_s": sized(balance, as_rpm)}
+        if which == 0:
+            wrong["scalar_sum"] = (4 * primary / (n if harmonic == 2 else 1), balance[1])
+        else:
+            wrong["couple_about_end_plane"] = closing(end[harmonic])
+            wrong["sign_lost"] = closing(lost[harmonic])
+        if harmonic == 2:
+            wrong["n_inverted"] = sized(balance, n * n)
+            wrong["secondary_not_doubled"] = closing(undoubled[which] / n)
+        mistakes[part] = wrong
+    return answers, mistakes
+
+
 def inline_engine_firing(v):
     g = printed(v, "firing", "strokes", "m", "r", "l", "a", "N")
     order = [int(c) for c in g.firing.split("-")]
@@ -314,7 +351,8 @@ ORACLES = {
     "balancing.complete_balance_masses": complete_balance_masses,
     "balancing.correction_plane_position": correction_plane_position,
     "balancing.bearing_reactions": bearing_reactions, "balancing.inline_engine_unbalance": inline_engine_unbalance,
-    "balancing.inline_engine_firing": inline_engine_firing, "balancing.inline_primary_balance": inline_primary_balance,
+    "balancing.inline_engine_firing": inline_engine_firing,
+    "balancing.inline_engine_directions": inline_engine_directions, "balancing.inline_primary_balance": inline_primary_balance,
     "balancing.radial_engine": radial_engine, "balancing.v_engine": v_engine,
 }
 

@@ -126,6 +126,45 @@ def inline_engine_unbalance(p, d):
                 d.mistake(f"theta_{tag}", mistake, angle + PI, if_apart=True)
 
 
+#: A crank drawn closer than this to another (at θ, or at 2θ unless they coincide) would share its label.
+CRANK_GAP = math.radians(20)
+#: A resultant below this share of its terms' sum has a direction a drawing hardly shows (Example 2.6: 0.09).
+DIRECTION_SHARE = 0.08
+
+
+def _apart(angles) -> bool:
+    """Every two directions coincide (a shared spoke) or lie at least CRANK_GAP apart."""
+    from .polygons import angle_gap_deg
+
+    gaps = [angle_gap_deg(a, b) for i, a in enumerate(angles) for b in angles[i + 1:]]
+    return all(g < 0.5 or g >= math.degrees(CRANK_GAP) for g in gaps)
+
+
+def inline_engine_directions(p, d):
+    """Example 2.6 itself: four cranks at any angles, so every polygon is left open; the size of each
+    unbalanced force and couple and the direction of the force or couple that balances it."""
+    names = [f"theta{i}" for i in range(1, 5)]
+    angles = [getattr(p, name) for name in names]
+    d.require(_apart(angles) and _apart([2 * a for a in angles]), "two cranks too close to tell apart on a drawing")
+    positions = me.centred_positions(4, p.a)
+    results = _crank_polygons(d, p, names, positions, with_angles=True)
+    unit, n = d.value_of("F1"), p.l / p.r
+    couple_arm = sum(map(abs, positions))
+    for tag, scale in (("Fp", 4 * unit), ("Cp", couple_arm * unit), ("Fs", 4 * unit / n), ("Cs", couple_arm * unit / n)):
+        d.require(results[tag] >= DIRECTION_SHARE * scale, "a polygon nearly closes: its direction means little")
+        d.mistake(f"theta_{tag}", "resultant_not_balance", d.value_of(f"theta_{tag}") + PI)
+    _inline_slips(d, p, angles, positions, results, angle_steps=False)
+    for tag, size in (("Fp", 4 * unit), ("Fs", 4 * unit / n)):
+        d.mistake(tag, "scalar_sum", size)
+    for harmonic, tag in ((1, "Cp"), (2, "Cs")):
+        # about cylinder 1's plane: a different couple, as the forces do not balance; every distance positive
+        for mistake, where in (("couple_about_end_plane", [x - positions[0] for x in positions]),
+                               ("sign_lost", [abs(x) for x in positions])):
+            _, (size, angle) = me.inline_unbalance(p.m, p.r, n, p.N, angles, where, harmonic)
+            d.mistake(tag, mistake, size)
+            d.mistake(f"theta_{tag}", mistake, angle + PI)
+
+
 def inline_engine_firing(p, d):
     """Example 2.7, Problem 2.4(a): crank angles from the firing order; is the engine balanced?"""
     order = me.parse_firing_order(p.firing)
