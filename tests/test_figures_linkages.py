@@ -4,7 +4,8 @@ import math
 import pytest
 
 from exgen.figures.linkage_poses import joints
-from exgen.figures.linkages import coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction
+from exgen.figures.linkages import (coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction,
+                                    synthesis_three, synthesis_three_construction)
 from exgen.figures.mechanisms import kinematic_diagram
 from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
@@ -41,7 +42,7 @@ def test_every_value_a_sheet_figure_prints_is_given_data(bank):
     """So no figure carries an answer: each 'name = value' label shows a given value as printed."""
     for template_id in ("linkages.fourbar_position", "linkages.coupler_point", "linkages.slider_crank",
                         "linkages.grashof", "linkages.rocker_swing", "linkages.actuator_swing",
-                        "linkages.two_position_synthesis"):
+                        "linkages.two_position_synthesis", "linkages.three_position_synthesis"):
         for seed in range(8):
             variant = make_variant(bank.get(template_id), seed)
             given = {str(p) for p in variant.params}
@@ -66,6 +67,18 @@ def test_coupler_point_figure_marks_p_and_the_origin(bank):
 def test_synthesis_key_shows_the_pivots_the_sheet_does_not(bank):
     variant = make_variant(bank.get("linkages.two_position_synthesis"), 2)
     assert "E" not in texts(synthesis(variant)) and {"E", "F"} <= set(texts(synthesis_construction(variant)))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_three_position_key_puts_each_pivot_where_its_bisectors_cross(bank, seed):
+    variant = make_variant(bank.get("linkages.three_position_synthesis"), seed)
+    sheet, key = synthesis_three(variant), synthesis_three_construction(variant)
+    assert {"M₃", "N₃"} <= set(texts(sheet)) and "E" not in texts(sheet)
+    assert {"E", "F"} <= set(texts(key))
+    # a link from each pivot to each of its pin's three positions, and the two chords whose bisectors cross there
+    bars = [e for e in root(key).iter(f"{SVG}line") if "synthesised" in (e.get("class") or "")]
+    chords = [e for e in root(key).iter(f"{SVG}line") if "chord" in (e.get("class") or "")]
+    assert len(chords) == 4 and len(bars) >= 6
 
 
 @pytest.mark.parametrize("seed", range(12))

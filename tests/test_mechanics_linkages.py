@@ -188,3 +188,12 @@ def test_synthesis_pivots_are_equidistant():
     assert pivot[1] == 0 and math.dist(pivot, p1) == pytest.approx(math.dist(pivot, p2))
     with pytest.raises(lk.NotAssemblable):
         lk.bisector_on_line((1, 3), (1, 5), 0.0)
+
+
+def test_circumcentre_is_as_far_from_three_positions():
+    # three positions of a pin on a circle about (100, -50) of radius 300: the pivot is its centre
+    centre, radius = (100.0, -50.0), 300.0
+    trio = [(centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a)) for a in (0.3, 1.2, 2.5)]
+    assert lk.circumcentre(*trio) == pytest.approx(centre)
+    with pytest.raises(lk.NotAssemblable):
+        lk.circumcentre((0, 0), (1, 1), (2, 2))

@@ -316,6 +316,26 @@ def two_position_synthesis(v):
     return out
 
 
+def three_position_synthesis(v):
+    g = printed(v, "b", "xM1", "yM1", "phi1", "xM2", "yM2", "phi2", "xM3", "yM3", "phi3")
+    m = [(g.xM1, g.yM1), (g.xM2, g.yM2), (g.xM3, g.yM3)]
+    n = [(x + g.b * math.cos(phi), y + g.b * math.sin(phi)) for (x, y), phi in zip(m, (g.phi1, g.phi2, g.phi3))]
+    out, good = {}, {}
+    for (xo, yo, r), name, trio in ((("a", "b", "c"), "M", m), (("d", "e", None), "N", n)):
+        centroid = (sum(p[0] for p in trio) / 3, sum(p[1] for p in trio) / 3)
+        out[xo], out[yo] = {"centroid": centroid[0]}, {"centroid": centroid[1]}
+        if r:
+            out[r] = {"centroid": math.dist(trio[0], centroid)}
+        # the circumcentre from |q - p1|² = |q - p2|² = |q - p3|²: two linear equations, by elimination
+        (x1, y1), (x2, y2), (x3, y3) = trio
+        a1, b1, c1 = x2 - x1, y2 - y1, (x2 ** 2 + y2 ** 2 - x1 ** 2 - y1 ** 2) / 2
+        a2, b2, c2 = x3 - x1, y3 - y1, (x3 ** 2 + y3 ** 2 - x1 ** 2 - y1 ** 2) / 2
+        good[name] = (a1 * c2 - a2 * c1) / (a1 * b2 - a2 * b1) > 0      # y of the pivot above the floor
+    reversed_test = {(True, True): "neither", (False, False): "both", (True, False): "N only", (False, True): "M only"}
+    out["f"] = {"floor_test_reversed": reversed_test[(good["M"], good["N"])]}
+    return out
+
+
 def mobility(v):
     """The counts from the drawn mechanism (its figure is the sheet's data), by Gruebler's equation."""
     mech = build(*(v.param(n).text for n in ("base",)), tuple(v.param(n).text for n in ("add1", "add2", "add3")),
@@ -347,6 +367,7 @@ MISTAKES = {
     "linkages.fourbar_position": fourbar_position, "linkages.coupler_point": coupler_point, "linkages.grashof": grashof,
     "linkages.rocker_swing": rocker_swing, "linkages.slider_crank": slider_crank_mistakes,
     "linkages.actuator_swing": actuator_swing, "linkages.two_position_synthesis": two_position_synthesis,
+    "linkages.three_position_synthesis": three_position_synthesis,
     "linkages.mobility": mobility,
 }
 

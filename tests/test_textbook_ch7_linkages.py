@@ -146,6 +146,30 @@ def test_two_position_synthesis_pivots_on_the_floor(bank):
     assert got["e"] in ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
 
 
+@pytest.mark.parametrize("centre, verdict", [((0, -100), "neither"), ((0, 100), "both")])
+def test_three_position_synthesis_pivot_is_the_circumcentre_and_the_floor_test(bank, centre, verdict):
+    # §7.11 (Problem 7.4 asks the same of a bottle): the fixed pivot of a moving pivot is where the perpendicular
+    # bisectors of its three positions cross. The text gives no numbers: M's positions are put on a circle
+    # (about (0, -100) of radius 500, or about (0, 100) of radius 250), so E must come back at its centre, and
+    # "below the floor - usually a bad selection", "higher than the floor indicating good selection".
+    radius = 500 if centre[1] < 0 else 250
+    ms = [(-400, 200), (0, 400), (300, 300)] if centre[1] < 0 else [(-240, 170), (0, 350), (200, 250)]
+    assert all(math.dist(m, centre) == pytest.approx(radius) for m in ms)
+    phis = (60, 0, -30)
+    given = {"b": "200 mm"}
+    for k, ((x, y), phi) in enumerate(zip(ms, phis), start=1):
+        given.update({f"xM{k}": f"{x} mm", f"yM{k}": f"{y} mm", f"phi{k}": f"{phi} deg"})
+    got, _, warnings = answers_and_steps(bank, "linkages.three_position_synthesis", **given)
+    assert (got["a"], got["b"], got["c"]) == (pytest.approx(centre[0], abs=1e-9), pytest.approx(centre[1]),
+                                              pytest.approx(radius))
+    ns = [(x + 200 * math.cos(rad(phi)), y + 200 * math.sin(rad(phi))) for (x, y), phi in zip(ms, phis)]
+    f = (got["d"], got["e"])
+    distances = [math.dist(n, f) for n in ns]
+    assert distances == pytest.approx([distances[0]] * 3)                # F as far from N1, N2 and N3
+    assert (f[1] > 0) == (centre[1] > 0) and got["f"] == verdict
+    assert warnings == []
+
+
 @pytest.mark.parametrize("slider, line, where", [
     ("right", "horizontal line of slide 20 mm below A", "with the slider to the right of A."),
     ("left", "horizontal line of slide 20 mm below A", "with the slider to the left of A."),

@@ -293,12 +293,18 @@ def actuator(variant) -> str:
 PIVOT = {"M": "E", "N": "F"}   # the ground pivots of the links to M and to N
 
 
-def _synthesis_figure(variant, key: bool) -> str:
+#: How positions 1, 2, 3 of the gripper are drawn: solid, dashed, dotted.
+POSITION_DASH = ("", DASH, "2 3")
+
+
+def _synthesis_figure(variant, key: bool, count: int = 2) -> str:
     world = {}
-    for k in (1, 2):
+    positions = range(1, count + 1)
+    for k in positions:
         world[f"M{k}"] = (_si(variant, f"xM{k}"), _si(variant, f"yM{k}"))
         world[f"N{k}"] = (_step(variant, f"xN{k}"), _step(variant, f"yN{k}"))
-    pivots = {"M": (_step(variant, "xOM"), 0.0), "N": (_step(variant, "xON"), 0.0)}
+    height = {name: (_step(variant, f"yO{name}") if count == 3 else 0.0) for name in ("M", "N")}
+    pivots = {name: (_step(variant, f"xO{name}"), height[name]) for name in ("M", "N")}
     extent = list(world.values()) + [(0.0, 0.0)] + (list(pivots.values()) if key else [])
     frame = fit(extent, 400, 260)
     page = {k: frame(v) for k, v in world.items()}
@@ -306,21 +312,23 @@ def _synthesis_figure(variant, key: bool) -> str:
     xs = [p[0] for p in page.values()] + [0.0] + ([frame(p)[0] for p in pivots.values()] if key else [])
     floor = frame((0.0, 0.0))[1]
     s.hatch_line((min(xs) - 40, floor), (max(xs) + 40, floor), (0.0, 1.0))
-    for k, dash in ((1, ""), (2, DASH)):
+    for k in positions:
+        dash = POSITION_DASH[k - 1]
         s.thin(page[f"M{k}"], page[f"N{k}"], dash=dash, width=7.0 if not dash else 2.0, cls=f"gripper-{k}")
         s.pin(page[f"M{k}"], dash="2 2" if dash else "")
         s.pin(page[f"N{k}"], dash="2 2" if dash else "")
     if key:
         for name in ("M", "N"):
             o = frame(pivots[name])
-            for k in (1, 2):
-                s.bar(o, page[f"{name}{k}"], dash="" if k == 1 else DASH, cls="synthesised")
-            s.thin(page[f"{name}1"], page[f"{name}2"], dash="2 3", cls="chord")
+            for k in positions:
+                s.bar(o, page[f"{name}{k}"], dash=POSITION_DASH[k - 1] and DASH, cls="synthesised")
+            for k in positions[:-1]:
+                s.thin(page[f"{name}{k}"], page[f"{name}{k + 1}"], dash="2 3", cls="chord")
             s.ground_pivot(o)
     origin = frame((0.0, 0.0))
     s.thin((origin[0], origin[1] - 7), (origin[0], origin[1] + 7), cls="origin")
     s.corner_axes()
-    for k in (1, 2):
+    for k in positions:
         centre = centre_of([page[f"M{k}"], page[f"N{k}"]])
         centre = (centre[0], centre[1] + 30)
         s.joint_label(page[f"M{k}"], f"M{SUBSCRIPT[str(k)]}", centre)
@@ -334,8 +342,9 @@ def _synthesis_figure(variant, key: bool) -> str:
     s.label([((origin[0] + dx, origin[1] - rise), anchor, 0.0) for rise in (12, 26, -26, 42, -40)
              for dx, anchor in ((0, "middle"), (8, "start"), (-8, "end"), (24, "start"), (-24, "end"))],
             "x = 0", size=NOTE_SIZE, style="italic")
-    return s.svg("Gripper plate MN in position 1 (solid) and position 2 (dashed)"
-                 + (", with the ground pivots found" if key else ""))
+    shown = ("in position 1 (solid) and position 2 (dashed)" if count == 2 else
+             "in positions 1 (solid), 2 (dashed) and 3 (dotted)")
+    return s.svg(f"Gripper plate MN {shown}" + (", with the ground pivots found" if key else ""))
 
 
 def synthesis(variant) -> str:
@@ -346,3 +355,14 @@ def synthesis(variant) -> str:
 def synthesis_construction(variant) -> str:
     """For the key: the ground pivots E and F on the floor and the links to both positions."""
     return _synthesis_figure(variant, key=True)
+
+
+def synthesis_three(variant) -> str:
+    """§7.11 as the text draws it: the gripper's three positions, above the floor."""
+    return _synthesis_figure(variant, key=False, count=3)
+
+
+def synthesis_three_construction(variant) -> str:
+    """For the key: each ground pivot where its pin's chords' bisectors cross, with the links to all three
+    positions; a pivot below the floor is drawn where it falls."""
+    return _synthesis_figure(variant, key=True, count=3)

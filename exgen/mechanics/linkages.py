@@ -218,6 +218,23 @@ def bisector_on_line(p1: tuple[float, float], p2: tuple[float, float], y_line: f
     return mx - (y_line - my) * dy / dx, y_line
 
 
+def circumcentre(p1: tuple[float, float], p2: tuple[float, float], p3: tuple[float, float]) -> tuple[float, float]:
+    """The point equally far from three positions of a moving pivot (§7.11, three positions): where the
+    perpendicular bisectors of p1 p2 and p2 p3 cross, the only ground pivot from which one link reaches all
+    three."""
+    (ax, ay), (bx, by), (cx, cy) = p1, p2, p3
+    det = 2 * ((bx - ax) * (cy - by) - (by - ay) * (cx - bx))
+    scale = max(abs(v) for v in (ax, ay, bx, by, cx, cy)) + 1.0
+    if abs(det) < EQUAL * scale * scale:
+        raise NotAssemblable("three positions in a line: their bisectors are parallel")
+    # each bisector: (q - m)·(b - a) = 0, i.e. q·(b - a) = (|b|² - |a|²)/2
+    k1 = (bx * bx + by * by - ax * ax - ay * ay)
+    k2 = (cx * cx + cy * cy - bx * bx - by * by)
+    x = (k1 * (cy - by) - k2 * (by - ay)) / det
+    y = (k2 * (bx - ax) - k1 * (cx - bx)) / det
+    return tuple(0.0 if abs(v) < EQUAL * scale else v for v in (x, y))
+
+
 def moves_between(a, d, b1, c1, b2, c2, samples: int = 90) -> bool:
     """Whether the four-bar A-B-C-D (ground pivots a, d) carries B and C from (b1, c1) to (b2, c2)
     without leaving its circuit: the crank turns the short way round and the linkage assembles

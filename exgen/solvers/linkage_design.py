@@ -111,3 +111,94 @@ def _require_buildable(p, d, points, pivots, ground) -> None:
         (x1, y1), (x2, y2), o = points[f"{name}1"], points[f"{name}2"], pivots[name]
         swing = angle_gap_deg(math.atan2(y1 - o[1], x1 - o[0]), math.atan2(y2 - o[1], x2 - o[0]))
         d.require(swing >= 10, "a link that barely turns")
+
+
+VERDICTS = {(True, True): "both", (True, False): "M only", (False, True): "N only", (False, False): "neither"}
+
+
+def three_position_synthesis(p, d):
+    """§7.11 as the text works it, three positions: each ground pivot is where the perpendicular bisectors
+    of its pin's three positions cross (the circumcentre), and the text's test calls a pin a good choice when
+    that pivot falls above the floor."""
+    points = {}
+    for k in (1, 2, 3):
+        xm, ym, phi = (getattr(p, f"{n}{k}") for n in ("xM", "yM", "phi"))
+        points[f"M{k}"] = (xm, ym)
+        xn = d.step(f"xN{k}", xm + p.b * math.cos(phi), "m", symbol=f"x_{{N{k}}}", formula=rf"@xM{k} + @b\cos @phi{k}")
+        yn = d.step(f"yN{k}", ym + p.b * math.sin(phi), "m", symbol=f"y_{{N{k}}}", formula=rf"@yM{k} + @b\sin @phi{k}")
+        points[f"N{k}"] = (xn, yn)
+    pivots, above = {}, {}
+    for name in ("M", "N"):
+        pivot = PIVOT[name]
+        trio = [points[f"{name}{k}"] for k in (1, 2, 3)]
+        chord = min(math.dist(trio[0], trio[1]), math.dist(trio[1], trio[2]))
+        turn = abs(wrap_angle(math.atan2(trio[2][1] - trio[1][1], trio[2][0] - trio[1][0])
+                              - math.atan2(trio[1][1] - trio[0][1], trio[1][0] - trio[0][0])))
+        d.require(chord >= 0.5 * p.b and turn >= math.radians(20), f"{name}'s three positions nearly in a line")
+        x, y = _circumcentre_steps(d, name, pivot, trio)
+        pivots[name] = (x, y)
+        d.step(f"R{name}", math.hypot(trio[0][0] - x, trio[0][1] - y), "m", symbol=f"{pivot}{name}",
+               formula=rf"\sqrt{{(@x{name}1 - @xO{name})^2 + (@y{name}1 - @yO{name})^2}}",
+               note=f"the link from {pivot} to {name}: it reaches {name}2 and {name}3 as well")
+        above[name] = y > 0
+        cx, cy = (sum(pt[0] for pt in trio) / 3, sum(pt[1] for pt in trio) / 3)
+        d.mistake(f"xO{name}", "centroid", cx)
+        d.mistake(f"yO{name}", "centroid", cy)
+        d.mistake(f"R{name}", "centroid", math.dist(trio[0], (cx, cy)), if_apart=True)
+    verdict = VERDICTS[(above["M"], above["N"])]
+    d.step("verdict", verdict, "", symbol=r"\text{good choices}",
+           note=f"E is {_floor_side(pivots['M'][1])} and F {_floor_side(pivots['N'][1])}: by the text's test a pin "
+                "is a good choice when its ground pivot stands above the floor")
+    d.mistake("verdict", "floor_test_reversed", VERDICTS[(not above["M"], not above["N"])])
+    _require_three_positions(p, d, points, pivots)
+
+
+def wrap_angle(angle: float) -> float:
+    return (angle + math.pi) % (2 * math.pi) - math.pi
+
+
+def _floor_side(y: float) -> str:
+    return "above the floor" if y > 0 else "below the floor"
+
+
+def _circumcentre_steps(d, name: str, pivot: str, trio) -> tuple[float, float]:
+    """The two perpendicular bisectors as linear equations, (x₂ − x₁) x + (y₂ − y₁) y = c, solved by
+    Cramer's rule: the working the text's construction stands for."""
+    q = [(f"@x{name}{k}", f"@y{name}{k}") for k in (1, 2, 3)]
+    for i, (a, b) in enumerate(((0, 1), (1, 2)), start=1):
+        (xa, ya), (xb, yb) = trio[a], trio[b]
+        d.step(f"c{i}_{name}", (xb * xb + yb * yb - xa * xa - ya * ya) / 2, "m^2", symbol=f"c_{{{i}{name}}}",
+               formula=rf"\frac{{{q[b][0]}^2 + {q[b][1]}^2 - {q[a][0]}^2 - {q[a][1]}^2}}{{2}}",
+               note=f"the perpendicular bisector of {name}{a + 1} {name}{b + 1}: "
+                    f"$(x_{{{name}{b + 1}}} - x_{{{name}{a + 1}}})\\,x + (y_{{{name}{b + 1}}} - y_{{{name}{a + 1}}})\\,y = c_{{{i}{name}}}$")
+    (x1, y1), (x2, y2), (x3, y3) = trio
+    d.step(f"D_{name}", (x2 - x1) * (y3 - y2) - (y2 - y1) * (x3 - x2), "m^2", symbol=f"\\Delta_{name}",
+           formula=rf"({q[1][0]} - {q[0][0]})({q[2][1]} - {q[1][1]}) - ({q[1][1]} - {q[0][1]})({q[2][0]} - {q[1][0]})",
+           note="the determinant of the two bisectors' equations")
+    centre = lk.circumcentre(*trio)
+    x = d.step(f"xO{name}", centre[0], "m", symbol=f"x_{pivot}",
+               formula=rf"\frac{{@c1_{name}\,({q[2][1]} - {q[1][1]}) - @c2_{name}\,({q[1][1]} - {q[0][1]})}}{{@D_{name}}}",
+               note=f"where the bisectors cross: {pivot} is as far from {name}1, {name}2 and {name}3")
+    y = d.step(f"yO{name}", centre[1], "m", symbol=f"y_{pivot}",
+               formula=rf"\frac{{@c2_{name}\,({q[1][0]} - {q[0][0]}) - @c1_{name}\,({q[2][0]} - {q[1][0]})}}{{@D_{name}}}")
+    return x, y
+
+
+def _require_three_positions(p, d, points, pivots) -> None:
+    """The linkage carries the plate 1 → 2 → 3 on one circuit, with pivots and links a machine could have."""
+    if not d.strict:
+        return
+    for a, b in ((1, 2), (2, 3)):
+        d.require(lk.moves_between(pivots["M"], pivots["N"], points[f"M{a}"], points[f"N{a}"], points[f"M{b}"],
+                                   points[f"N{b}"]), "the linkage cannot pass through the positions on one circuit")
+    span = max(abs(v) for pt in points.values() for v in pt)
+    for name in ("M", "N"):
+        o = pivots[name]
+        d.require(math.hypot(*o) <= 1.5 * span and o[1] >= -0.8 * span, "a ground pivot far outside the work area")
+        d.require(0.25 * p.b <= d.value_of(f"R{name}") <= 5 * p.b, "a link out of proportion to the coupler")
+        angles = [math.atan2(points[f"{name}{k}"][1] - o[1], points[f"{name}{k}"][0] - o[0]) for k in (1, 2, 3)]
+        steps = [wrap_angle(angles[1] - angles[0]), wrap_angle(angles[2] - angles[1])]
+        d.require(min(map(abs, steps)) >= math.radians(10) and steps[0] * steps[1] > 0,
+                  "a link that barely turns, or turns back, between positions")
+        d.require(abs(o[1]) >= 0.05 * d.value_of(f"R{name}"), "a ground pivot almost on the floor: the test undecided")
+    d.require(math.dist(pivots["M"], pivots["N"]) >= 0.25 * p.b, "the ground pivots too close together")
