@@ -4,8 +4,8 @@ import math
 import pytest
 
 from exgen.figures.linkage_poses import joints
-from exgen.figures.linkages import (coupler_point, fourbar, fourbar_circuits, synthesis, synthesis_construction,
-                                    synthesis_three, synthesis_three_construction)
+from exgen.figures.linkages import (coupler_point, fourbar, fourbar_as_drawn, fourbar_both_roots, fourbar_circuits,
+                                    synthesis, synthesis_construction, synthesis_three, synthesis_three_construction)
 from exgen.figures.mechanisms import kinematic_diagram
 from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
@@ -42,7 +42,8 @@ def test_every_value_a_sheet_figure_prints_is_given_data(bank):
     """So no figure carries an answer: each 'name = value' label shows a given value as printed."""
     for template_id in ("linkages.fourbar_position", "linkages.coupler_point", "linkages.slider_crank",
                         "linkages.grashof", "linkages.rocker_swing", "linkages.actuator_swing",
-                        "linkages.two_position_synthesis", "linkages.three_position_synthesis"):
+                        "linkages.two_position_synthesis", "linkages.three_position_synthesis",
+                        "linkages.fourbar_both_roots"):
         for seed in range(8):
             variant = make_variant(bank.get(template_id), seed)
             given = {str(p) for p in variant.params}
@@ -67,6 +68,15 @@ def test_coupler_point_figure_marks_p_and_the_origin(bank):
 def test_synthesis_key_shows_the_pivots_the_sheet_does_not(bank):
     variant = make_variant(bank.get("linkages.two_position_synthesis"), 2)
     assert "E" not in texts(synthesis(variant)) and {"E", "F"} <= set(texts(synthesis_construction(variant)))
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_both_roots_sheet_names_no_circuit_and_the_key_draws_the_other(bank, seed):
+    variant = make_variant(bank.get("linkages.fourbar_both_roots"), seed)
+    sheet, key = fourbar_as_drawn(variant), fourbar_both_roots(variant)
+    assert "circuit" not in sheet.lower() and "C′" not in texts(sheet)
+    assert "C′" in texts(key) and len([e for e in root(key).iter(f"{SVG}line")
+                                       if "other-circuit" in (e.get("class") or "")]) == 2
 
 
 @pytest.mark.parametrize("seed", range(6))

@@ -209,6 +209,22 @@ def coupler_point(v):
             "e": {"wrong_circuit": other_p.imag, "other_side": side_p.imag}}
 
 
+def fourbar_both_roots(v):
+    g = printed(v, "xA", "yA", "L2", "L3", "L4", "theta2")
+    drawn = 1.0 if str(v.param("circuit").exact) == "2" else -1.0    # the figure: +phi for circuit 2
+    b = complex(g.xA, g.yA) + g.L2 * cmath.exp(1j * g.theta2)       # D at the origin
+    bare = math.atan(b.imag / b.real)                                # tan^-1 without the half turn
+    at_b = math.acos((abs(b) ** 2 + g.L3 ** 2 - g.L4 ** 2) / (2 * g.L3 * abs(b)))
+    phi = math.acos((abs(b) ** 2 + g.L4 ** 2 - g.L3 ** 2) / (2 * g.L4 * abs(b)))
+    out = {part: {"quadrant_lost": bare + sign * phi, "angle_at_b": cmath.phase(b) + sign * at_b}
+           for part, sign in (("a", 1.0), ("b", -1.0))}
+    out["c"] = {"wrong_circuit": "minus" if drawn > 0 else "plus"}
+    theta3 = cmath.phase(g.L4 * cmath.exp(1j * (cmath.phase(b) + drawn * phi)) - b)
+    other3 = cmath.phase(g.L4 * cmath.exp(1j * (cmath.phase(b) - drawn * phi)) - b)
+    out["d"] = {"wrong_circuit": other3, "coupler_reversed": theta3 + math.pi}
+    return out
+
+
 NAMES = ("AB", "BC", "CD", "DA")
 
 
@@ -368,6 +384,7 @@ MISTAKES = {
     "linkages.rocker_swing": rocker_swing, "linkages.slider_crank": slider_crank_mistakes,
     "linkages.actuator_swing": actuator_swing, "linkages.two_position_synthesis": two_position_synthesis,
     "linkages.three_position_synthesis": three_position_synthesis,
+    "linkages.fourbar_both_roots": fourbar_both_roots,
     "linkages.mobility": mobility,
 }
 

@@ -146,6 +146,25 @@ def test_two_position_synthesis_pivots_on_the_floor(bank):
     assert got["e"] in ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
 
 
+def test_four_bar_example_question_2_both_roots_then_the_one_drawn(bank):
+    # §7.9, question 2: r1 = 14 (A straight above D), r2 = 8 at 195 deg, r3 = 16, r4 = 10 (inches).
+    # R_H = (-7.73, 11.93), theta_H = 123 deg, phi = 80.65 deg: theta4 = theta_H + phi = 203.65 deg, "the one
+    # that corresponds to the figure"; the other root is theta_H - phi = 42.35 deg (from the rounded 123 deg;
+    # exactly 42.25). The text's theta3 = 84.87 deg is the loop's R3 from C to B; the sheet asks B -> C.
+    given = dict(xA="0 inch", yA="14 inch", L2="8 inch", L3="16 inch", L4="10 inch", theta2="195 deg")
+    got, steps, _ = answers_and_steps(bank, "linkages.fourbar_both_roots", circuit="2", **given)
+    assert got["a"] % 360 == pytest.approx(203.65, abs=0.05)
+    assert got["b"] % 360 == pytest.approx(123 - 80.65, abs=0.15)
+    # phi is 80.68 deg from the exact r_H = 14.2135 (the text's BE); the text's 80.65 is from r_H rounded to 14.22
+    assert deg(steps["phi"]) == pytest.approx(80.68, abs=0.005) and steps["r_H"] == pytest.approx(14.2135 * 0.0254, rel=1e-5)
+    assert got["c"] == "plus"
+    assert (got["d"] + 180) % 360 == pytest.approx(84.87, abs=0.05)
+    # drawn the other way, the same two roots, and the other is picked
+    mirrored, _, _ = answers_and_steps(bank, "linkages.fourbar_both_roots", circuit="1", **given)
+    assert (mirrored["a"], mirrored["b"]) == (pytest.approx(got["a"]), pytest.approx(got["b"]))
+    assert mirrored["c"] == "minus"
+
+
 @pytest.mark.parametrize("centre, verdict", [((0, -100), "neither"), ((0, 100), "both")])
 def test_three_position_synthesis_pivot_is_the_circumcentre_and_the_floor_test(bank, centre, verdict):
     # §7.11 (Problem 7.4 asks the same of a bottle): the fixed pivot of a moving pivot is where the perpendicular

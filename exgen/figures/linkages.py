@@ -98,6 +98,42 @@ def fourbar_circuits(variant) -> str:
     return _fourbar_figure(variant, key=True)
 
 
+def fourbar_as_drawn(variant) -> str:
+    """§7.9 question 2: the linkage as assembled, D at the origin; which root it is the sheet asks, so the
+    caption names no circuit."""
+    return _roots_figure(variant, key=False)
+
+
+def fourbar_both_roots(variant) -> str:
+    """For the key: the linkage as drawn, and the other root's coupler and rocker dashed (C′)."""
+    return _roots_figure(variant, key=True)
+
+
+def _roots_figure(variant, key: bool) -> str:
+    b = (_step(variant, "xB"), _step(variant, "yB"))
+    points = {"A": (_si(variant, "xA"), _si(variant, "yA")), "B": b, "C": (_step(variant, "xC"), _step(variant, "yC")),
+              "D": (0.0, 0.0)}
+    shown = _word(variant, "circuit")
+    other = lk.polar((0.0, 0.0), _si(variant, "L4"), _step(variant, "theta4_" + ("minus" if shown == "2" else "plus")))
+    frame = fit(list(points.values()) + ([other] if key else []), 380, 250)
+    page = {k: frame(v) for k, v in points.items()}
+    s = Sketch()
+    _fourbar_geometry(s, page, frame(other) if key else None)
+    angle_label = _crank_arc(s, page["A"], page["B"], _si(variant, "theta2"), f"θ₂ = {_text(variant, 'theta2')}")
+    s.corner_axes()
+    middle = centre_of([page[k] for k in "ABCD"])
+    for k in "ABC":
+        s.joint_label(page[k], k, middle)
+    s.joint_label(page["D"], "D (0, 0)", middle)
+    if key:
+        s.joint_label(frame(other), "C′", middle)
+    for (p, q), text in zip((("A", "B"), ("B", "C"), ("C", "D")),
+                            (f"L{SUBSCRIPT[str(i)]} = {_text(variant, f'L{i}')}" for i in (2, 3, 4))):
+        s.link_label(page[p], page[q], text, middle)
+    angle_label()
+    return s.svg("Four-bar linkage as assembled; D at the origin" + (", the other root dashed (C′)" if key else ""))
+
+
 def coupler_point(variant) -> str:
     """The four-bar example's suspension: D at the origin, A where given, the coupler plate BCP."""
     world = {"A": (_si(variant, "xA"), _si(variant, "yA")), "B": (_step(variant, "xB"), _step(variant, "yB")),

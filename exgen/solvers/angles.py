@@ -25,7 +25,7 @@ def direction(d, name: str, symbol: str, y: str, x: str, y_value: float, x_value
     angle = math.atan2(y_value, x_value)
     if x_value == 0:
         return d.step(name, angle, "rad", symbol=symbol, note=f"{note}: straight {'up' if y_value > 0 else 'down'}")
-    if math.atan(y_value / x_value) != angle:
+    if abs(math.atan(y_value / x_value) - angle) > 1e-12:   # not float noise: a half turn
         note += ", with the half turn that puts it in the quadrant of its components"
     return d.step(name, angle, "rad", symbol=symbol, formula=direction_formula(y, x, y_value, x_value, angle),
                   note=note)
