@@ -255,6 +255,8 @@ def grashof(v):
         out["c"]["wrong_pair"] = wrong
     if right in ("double-crank", "double-rocker", "crank-rocker"):
         out["c"]["ground_ignored"] = "double-crank" if right == "crank-rocker" else "crank-rocker"
+    # a double-rocker is Grashof, but the link that turns fully is the coupler: a motor on the frame cannot drive it
+    out["d"] = {"grashof_only": "motor"} if right == "double-rocker" else {}
     return out
 
 

@@ -164,6 +164,20 @@ def bearing_reactions(v):
     return answers, mistakes
 
 
+def balance_kind(v):
+    """Σ m r and Σ m r l about plane A; both closed is dynamic balance, the first alone static."""
+    g = printed(v, "m", "mD", "r", "a", "arrangement")
+    angles = [math.radians(float(a)) for a in g.arrangement.split(",")]
+    mr = [g.m * g.r] * 3 + [g.mD * g.r]
+    force = clean(sum(s * e(t) for s, t in zip(mr, angles)), sum(mr))
+    couple = clean(sum(s * k * g.a * e(t) for k, (s, t) in enumerate(zip(mr, angles))), 6 * g.a * max(mr))
+    verdict = "neither" if force else "static only" if couple else "both"
+    mistakes = {"a": {"scalar_sum": sum(mr)}, "b": {"scalar_sum": sum(s * k * g.a for k, s in enumerate(mr))}, "c": {}}
+    if verdict == "static only":
+        mistakes["c"]["static_is_enough"] = "both"
+    return {"a": abs(force), "b": abs(couple), "c": verdict}, mistakes
+
+
 # ---- reciprocating engines (§2.3) ----------------------------------------------------------------------
 
 
@@ -346,7 +360,7 @@ def v_engine(v):
 
 
 ORACLES = {
-    "balancing.static_balance": static_balance, "balancing.two_plane_balance": two_plane_balance,
+    "balancing.static_balance": static_balance, "balancing.balance_kind": balance_kind, "balancing.two_plane_balance": two_plane_balance,
     "balancing.complete_balance_position": complete_balance_position,
     "balancing.complete_balance_masses": complete_balance_masses,
     "balancing.correction_plane_position": correction_plane_position,

@@ -337,3 +337,22 @@ def test_a_reading_drawn_as_the_text_draws_is_marked_right(bank, template_id, gi
         assert min(gap, 360 - gap) <= part.tol.abs, (key, part.tol)
     else:
         assert abs(reading - key) <= max(part.tol.rel * abs(key), part.tol.abs or 0.0), (key, part.tol)
+
+
+@pytest.mark.parametrize("arrangement, m_d, verdict, couple", [
+    ("0, 180, 180, 0", "2 kg", "both", 0.0),              # the flat four: both polygons close
+    ("0, 180, 0, 180", "2 kg", "static only", 2.0),       # forces cancel; couples 0 - a + 2a - 3a = -2a
+    ("0, 90, 180, 270", "2 kg", "static only", math.hypot(2, 2)),   # -2a along 0 deg and -2a along 90 deg
+    ("0, 180, 180, 0", "2.4 kg", "neither", None),        # D heavier: the force polygon stays open
+])
+def test_section_2_1_statically_and_dynamically_balanced(bank, arrangement, m_d, verdict, couple):
+    # §2.1: "When the body is dynamically balanced, it is also statically balanced. But if a body is statically
+    # balanced, it may not be dynamically balanced." Four 2 kg masses at 100 mm, planes 200 mm apart.
+    got, _, _ = answers(bank, "balancing.balance_kind", m="2 kg", mD=m_d, r="100 mm", a="200 mm",
+                        arrangement=arrangement, kD=str(float(m_d.split()[0]) / 2))
+    assert got["c"] == verdict
+    if couple is not None:
+        assert got["a"] == 0.0
+        assert got["b"] == pytest.approx(couple * 200 * 0.2)    # in units of m r a: 200 kg mm x 0.2 m
+    else:
+        assert got["a"] == pytest.approx(0.4 * 100)             # the extra 0.4 kg at 100 mm, unbalanced

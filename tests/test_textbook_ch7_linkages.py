@@ -96,20 +96,23 @@ def test_slider_on_the_other_branch(bank):
     assert (got["d"], got["e"]) == pytest.approx((100 - l4 - 40, 50))
 
 
-@pytest.mark.parametrize("lengths, ground, kind", [
-    ((14, 8, 16, 10), "DA", "change-point"),       # the four-bar example: 8 + 16 = 14 + 10
-    ((70, 20, 80, 50), "DA", "crank-rocker"),      # the shortest, AB, beside the ground
-    ((70, 20, 80, 50), "AB", "double-crank"),      # the shortest grounded
-    ((70, 20, 80, 50), "CD", "double-rocker"),     # the link opposite the shortest grounded
-    ((80, 40, 60, 50), "DA", "triple-rocker"),     # 40 + 80 > 60 + 50
+# §7.5: "Knowing which category can help choose the right input. This may form electric motors for continuous
+# revolutions or hydraulic cylinders for rocking motions": a motor where a link pivoted on the frame turns fully.
+@pytest.mark.parametrize("lengths, ground, kind, actuator", [
+    ((14, 8, 16, 10), "DA", "change-point", "motor"),       # the four-bar example: 8 + 16 = 14 + 10; AB turns
+    ((70, 20, 80, 50), "DA", "crank-rocker", "motor"),      # the shortest, AB, beside the ground
+    ((70, 20, 80, 50), "AB", "double-crank", "motor"),      # the shortest grounded
+    ((70, 20, 80, 50), "CD", "double-rocker", "cylinder"),  # the link opposite the shortest grounded
+    ((80, 40, 60, 50), "DA", "triple-rocker", "cylinder"),  # 40 + 80 > 60 + 50
 ])
-def test_grashof_table_7_1(bank, lengths, ground, kind):
+def test_grashof_table_7_1(bank, lengths, ground, kind, actuator):
     da, ab, bc, cd = lengths
     got, steps, _ = answers_and_steps(bank, "linkages.grashof", AB=f"{ab} mm", BC=f"{bc} mm", CD=f"{cd} mm",
                             DA=f"{da} mm", ground=ground)
     assert got["a"] == min(lengths) + max(lengths)
     assert got["b"] == sum(lengths) - min(lengths) - max(lengths)
     assert got["c"] == kind
+    assert got["d"] == actuator
 
 
 def test_crank_rocker_limit_positions(bank):

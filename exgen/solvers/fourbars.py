@@ -182,8 +182,9 @@ def grashof(p, d):
                  formula=rf"@{p_name} + @{q_name}", note="the other two links")
     kind = lk.grashof_kind(s_l, p_q, result.shortest)
     compare = "=" if kind == "change-point" else ("<" if s_l < p_q else ">")
-    d.step("kind", kind, "", symbol=r"\text{class}",
-           note=f"S + L {compare} P + Q with {ground} grounded: {GRASHOF_REASON[kind]} (Table 7.1)")
+    kind = d.step("kind", kind, "", symbol=r"\text{class}",
+                  note=f"S + L {compare} P + Q with {ground} grounded: {GRASHOF_REASON[kind]} (Table 7.1)")
+    _actuator(d, kind, result.shortest)
     d.mistake("S_plus_L", "wrong_pair", lengths[s_name] + lengths[p_name])
     d.mistake("P_plus_Q", "wrong_pair", lengths[l_name] + lengths[q_name])
     by_position = [(lengths[roles["ground"]] + lengths[roles["crank"]], lengths[roles["coupler"]] + lengths[roles["rocker"]]),
@@ -197,6 +198,22 @@ def grashof(p, d):
         d.mistake("kind", "ground_ignored", "crank-rocker")
     elif kind == "crank-rocker":
         d.mistake("kind", "ground_ignored", "double-crank")
+
+
+ACTUATORS = ("motor", "cylinder")
+#: The classes in which a link pivoted on the frame turns fully (the change-point too, when the shortest link is
+#: the ground or beside it): a motor can drive it round; in the others both such links rock.
+TURNING = ("crank-rocker", "double-crank")
+
+
+def _actuator(d, kind: str, shortest: str) -> None:
+    """§7.5: a motor for a link that turns fully, a hydraulic or pneumatic cylinder for one that rocks."""
+    turns = kind in TURNING or (kind == "change-point" and shortest != "coupler")
+    which = ("a link pivoted on the frame turns fully: a motor drives it round" if turns else
+             "both links pivoted on the frame only rock: a cylinder swings one of them")
+    d.step("actuator", ACTUATORS[0 if turns else 1], "", symbol=r"\text{actuator}", note=f"{kind}: {which}")
+    if kind == "double-rocker":
+        d.mistake("actuator", "grashof_only", "motor")
 
 
 def rocker_swing(p, d):
