@@ -217,7 +217,10 @@ def porter_speed_range(v):
     def depth(r):
         return math.sqrt(l * l - (r - eu) ** 2) + math.sqrt(l * l - (r - el) ** 2)
 
-    return {"a": w1, "b": w2, "c": w2 - w1, "d": depth(p["r1"]) - depth(p["r2"])}
+    f1, f2 = p["m"] * w1 ** 2 * p["r1"], p["m"] * w2 ** 2 * p["r2"]
+    axis = f1 - (f2 - f1) / (p["r2"] - p["r1"]) * p["r1"]         # the chord through both points at r = 0
+    kind = "stable" if axis < 0 else "unstable" if axis > 0 else "isochronous"
+    return {"a": w1, "b": w2, "c": w2 - w1, "d": depth(p["r1"]) - depth(p["r2"]), "e": f1, "f": f2, "g": kind}
 
 
 def proell_extension(v):

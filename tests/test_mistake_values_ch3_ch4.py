@@ -178,7 +178,10 @@ def porter_speed_range(v):
         return math.sqrt(g.l ** 2 - (r - g.e_u) ** 2)
 
     return {part: {"offset_ignored": governor_speed(g.m, g.M * G, g.l, g.e_u, g.e_u, r)[0], "sleeve_moment_arm": at_iz(r)}
-            for part, r in (("a", g.r1), ("b", g.r2))} | {"d": {"one_arm_only": upper_height(g.r1) - upper_height(g.r2)}}
+            for part, r in (("a", g.r1), ("b", g.r2))} | {"d": {"one_arm_only": upper_height(g.r1) - upper_height(g.r2)}} | {
+        part: {"rpm_as_rad_s": g.m * (a[w] * 60 / (2 * math.pi)) ** 2 * r, "speed_not_squared": g.m * a[w] * r}
+        for part, w, r in (("e", "a", g.r1), ("f", "b", g.r2))} | {
+        "g": {"stability_inverted": {"stable": "unstable", "unstable": "stable"}.get(a["g"], "stable")}}
 
 
 def proell_extension(v):

@@ -71,6 +71,11 @@ def test_problem_4_2_porter_range(bank):
     assert got["c"] == pytest.approx(n2 - n1) and round(got["c"], 1) == 30.0
     depth = lambda r: math.sqrt(0.25 ** 2 - r ** 2) + math.sqrt(0.25 ** 2 - (r - 0.03) ** 2)
     assert got["d"] == pytest.approx((depth(0.15) - depth(0.20)) * 1000)
+    # §4.8: the controlling force F = m w^2 r at each radius; the Porter curve rises faster than r ("this
+    # condition is satisfied in the case of the Porter governor curve"), so the governor is stable
+    f1, f2 = (5 * (n * W) ** 2 * r for n, r in ((n1, 0.15), (n2, 0.20)))
+    assert (got["e"], got["f"]) == (pytest.approx(f1), pytest.approx(f2))
+    assert f2 / 0.20 > f1 / 0.15 and got["g"] == "stable"
 
 
 def test_problem_4_3_proell(bank):

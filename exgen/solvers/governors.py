@@ -110,6 +110,28 @@ def porter_speed_range(p, d):
                   formula=r"(@l\cos @alpha_1 + @l\cos @beta_1) - (@l\cos @alpha_2 + @l\cos @beta_2)",
                   note="how far the sleeve rises")
     d.mistake("lift", "one_arm_only", p.l * (math.cos(d.value_of("alpha_1")) - math.cos(d.value_of("alpha_2"))))
+    _controlling_curve(p, d)
+
+
+def _controlling_curve(p, d) -> None:
+    """§4.8: the controlling force F = m ω² r at each extreme radius, and whether F/r rises with r (stable):
+    the chord of the curve through the two points cuts the force axis below the origin."""
+    forces = {}
+    for tag, r in (("1", "r1"), ("2", "r2")):
+        omega = d.value_of(f"omega_{tag}")
+        forces[tag] = d.step(f"F_{tag}", p.m * omega ** 2 * getattr(p, r), "N", symbol=f"F_{tag}",
+                             formula=rf"@m\,@omega_{tag}^2\,@{r}", note="the controlling force on each ball (eq 4.7)")
+        d.mistake(f"F_{tag}", "rpm_as_rad_s", p.m * (omega * 60 / (2 * math.pi)) ** 2 * getattr(p, r))
+        d.mistake(f"F_{tag}", "speed_not_squared", p.m * omega * getattr(p, r))
+    slope, intercept = gv.controlling_line(forces["1"], p.r1, forces["2"], p.r2)
+    d.step("F_axis", intercept, "N", symbol="b", formula=r"@F_1 - \frac{@F_2 - @F_1}{@r2 - @r1}\,@r1",
+           note="where the line through the two points cuts the force axis, r = 0")
+    kind = gv.stability(intercept, forces["2"])
+    reason = {gv.STABLE: "below the origin: F/r rises with r, one radius for each speed",
+              gv.ISOCHRONOUS: "through the origin: F/r is the same at every radius",
+              gv.UNSTABLE: "above the origin: F/r falls as r rises"}[kind]
+    d.step("stability", kind, "", symbol=r"\text{governor}", note=reason)
+    d.mistake("stability", "stability_inverted", {gv.STABLE: gv.UNSTABLE, gv.UNSTABLE: gv.STABLE}.get(kind, gv.STABLE))
 
 
 def porter_friction(p, d):
