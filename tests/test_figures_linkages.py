@@ -6,7 +6,7 @@ import pytest
 from exgen.figures.linkage_poses import joints
 from exgen.figures.linkages import (coupler_point, fourbar, fourbar_as_drawn, fourbar_both_roots, fourbar_circuits,
                                     synthesis, synthesis_construction, synthesis_three, synthesis_three_construction)
-from exgen.figures.mechanisms import kinematic_diagram
+from exgen.figures import figure_svg
 from exgen.solve.variant import make_variant
 from svg_helpers import SVG, circles, root, texts, variant_of
 
@@ -91,10 +91,11 @@ def test_three_position_key_puts_each_pivot_where_its_bisectors_cross(bank, seed
     assert len(chords) == 4 and len(bars) >= 6
 
 
-@pytest.mark.parametrize("seed", range(12))
-def test_mobility_diagram_numbers_every_link(bank, seed):
-    variant = make_variant(bank.get("linkages.mobility"), seed)
-    svg = kinematic_diagram(variant)
+@pytest.mark.parametrize("template_id, seed", [(t, s) for t in ("linkages.mobility", "linkages.mobility_exceptions")
+                                                for s in range(12)])
+def test_mobility_diagram_numbers_every_link(bank, template_id, seed):
+    variant = make_variant(bank.get(template_id), seed)
+    svg = figure_svg(variant)
     labels = root(svg).iter(f"{SVG}text")
     numbers = [("".join(t.itertext()), t.get("class", "")) for t in labels]
     moving = sorted(int(n) for n, cls in numbers if cls == "link-number")

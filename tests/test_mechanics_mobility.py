@@ -115,3 +115,28 @@ def test_unknown_names_are_refused():
         build("ten-bar")
     with pytest.raises(ValueError, match="no addition"):
         build("four-bar", ("cam",))
+
+
+@pytest.mark.parametrize("base", BASES)
+def test_the_mobility_the_geometry_gives_is_the_rank_count(base):
+    # exgen's own rank (instantaneous_mobility, which linkages.mobility_exceptions asks) against this file's
+    # numerical Jacobian, for every catalogue diagram, the ones Gruebler misleads on included
+    from exgen.mechanics.mobility import instantaneous_mobility
+
+    for additions in itertools.product(ADDITIONS, repeat=3):
+        mech = build(base, additions)
+        assert instantaneous_mobility(mech) == freedom_by_rank(mech)[0], (base, additions)
+
+
+@pytest.mark.parametrize("case, gruebler, true", [
+    ("four-bar", 1, 1), ("three cranks", 0, 1), ("three cranks, one askew", 0, 0), ("four cranks", -1, 1)])
+def test_parallel_cranks_move_where_grueblers_count_says_they_cannot(case, gruebler, true):
+    # §7.4: "The KMoGE does not account for link sizes and shapes. It can give misleading results in the case
+    # of unique geometric configurations": a crank parallel and equal to a parallelogram's is redundant
+    from exgen.mechanics.mechanism_catalogue import parallel_cranks
+    from exgen.mechanics.mobility import instantaneous_mobility
+
+    for theta in (55, 90, 125):
+        for mirror in (False, True):
+            mech = parallel_cranks(case, math.radians(theta), mirror)
+            assert (mech.mobility, instantaneous_mobility(mech), freedom_by_rank(mech)[0]) == (gruebler, true, true)

@@ -354,6 +354,22 @@ def three_position_synthesis(v):
     return out
 
 
+def mobility_exceptions(v):
+    """From the drawing's cranks: L = cranks + coupler + ground, two pins a crank; parallel cranks move."""
+    case = str(v.param("case").exact)
+    cranks = {"four-bar": 2, "four cranks": 4}.get(case, 3)
+    links, pins = cranks + 2, 2 * cranks
+    gruebler = 3 * (links - 1) - 2 * pins
+    moves = not case.endswith("askew")
+    out = {"a": {"ground_not_counted": links - 1}, "b": {},
+           "c": {"ground_not_counted": 3 * (links - 2) - 2 * pins, "without_minus_one": 3 * links - 2 * pins},
+           "d": {}, "e": {}}
+    if moves and gruebler != 1:
+        out["d"]["gruebler_trusted"] = gruebler
+        out["e"]["gruebler_trusted"] = "structure"
+    return out
+
+
 def mobility(v):
     """The counts from the drawn mechanism (its figure is the sheet's data), by Gruebler's equation."""
     mech = build(*(v.param(n).text for n in ("base",)), tuple(v.param(n).text for n in ("add1", "add2", "add3")),
@@ -386,7 +402,7 @@ MISTAKES = {
     "linkages.rocker_swing": rocker_swing, "linkages.slider_crank": slider_crank_mistakes,
     "linkages.actuator_swing": actuator_swing, "linkages.two_position_synthesis": two_position_synthesis,
     "linkages.three_position_synthesis": three_position_synthesis,
-    "linkages.fourbar_both_roots": fourbar_both_roots,
+    "linkages.fourbar_both_roots": fourbar_both_roots, "linkages.mobility_exceptions": mobility_exceptions,
     "linkages.mobility": mobility,
 }
 

@@ -149,6 +149,22 @@ def test_two_position_synthesis_pivots_on_the_floor(bank):
     assert got["e"] in ("crank-rocker", "double-crank", "double-rocker", "change-point", "triple-rocker")
 
 
+@pytest.mark.parametrize("case, counts", [
+    ("four-bar", (4, 4, 1, 1, "mechanism")),                 # the parallelogram itself: the count holds
+    ("three cranks", (5, 6, 0, 1, "mechanism")),             # Figure 7.13's exception: M = 0, yet it moves
+    ("three cranks, one askew", (5, 6, 0, 0, "structure")),  # the same count, and truly locked
+    ("four cranks", (6, 8, -1, 1, "mechanism")),
+])
+def test_section_7_4_where_grueblers_equation_misleads(bank, case, counts):
+    # §7.4: "The KMoGE does not account for link sizes and shapes. It can give misleading results in the case of
+    # unique geometric configurations. Hence, logic or intuition must be used determining the mobility value"
+    # (seize-and-fix). M = 3(5 - 1) - 2(6) = 0 for three parallel cranks on one coupler, which still moves.
+    got, _, warnings = answers_and_steps(bank, "linkages.mobility_exceptions", case=case, theta="75 deg", mirror="no",
+                                         r="100 mm", a="200 mm")
+    assert tuple(got[k] for k in "abcde") == counts
+    assert warnings == []
+
+
 def test_four_bar_example_question_2_both_roots_then_the_one_drawn(bank):
     # §7.9, question 2: r1 = 14 (A straight above D), r2 = 8 at 195 deg, r3 = 16, r4 = 10 (inches).
     # R_H = (-7.73, 11.93), theta_H = 123 deg, phi = 80.65 deg: theta4 = theta_H + phi = 203.65 deg, "the one

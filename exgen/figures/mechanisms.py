@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from ..mechanics.mechanism_catalogue import parallel_cranks
 from ..mechanics.mobility import GROUND, Mechanism
 from ..solvers.mobility import mechanism_of
 from .kinematic import Sketch, around, centre_of
@@ -68,6 +69,12 @@ class _Words:
 def kinematic_diagram(variant) -> str:
     """The mechanism of a mobility problem, links numbered, ground hatched and numbered 1."""
     return draw(mechanism_of(_Words(variant)))
+
+
+def parallel_linkage(variant) -> str:
+    """§7.4's exceptions: a parallelogram linkage with its extra cranks, links numbered, ground hatched."""
+    words = _Words(variant)
+    return draw(parallel_cranks(words.case, variant.param("theta").si, words.mirror == "yes"))
 
 
 def draw(mech: Mechanism) -> str:

@@ -159,3 +159,36 @@ def misleading(mech: Mechanism) -> bool:
     so M looks like 0 or 1 while the loose links swing and the rest is locked."""
     loose = len(mech.free_ends)
     return loose > 0 and mech.mobility - loose < 0
+
+
+#: Linkages whose geometry Gruebler's count cannot see (§7.4, Figure 7.13): a parallelogram four-bar, and
+#: the same with one or two more cranks joining ground and coupler. Parallel and equal, an extra crank moves
+#: as the coupler already makes it (a redundant constraint); set askew, it locks the linkage.
+PARALLEL_CASES = ("four-bar", "three cranks", "three cranks, one askew", "four cranks")
+CRANK = 2.6        # the cranks' length, in diagram units
+#: The ground pivots' heights, so the coupler is a plate of the pivots' own shape.
+PIVOT_RISE = (0.0, 0.7, 0.0, 0.7)
+
+
+def parallel_cranks(case: str, theta: float, mirror: bool = False) -> Mechanism:
+    """The linkage of `case` with its cranks at `theta` (radians from +x): ground pivots O2, O6, O8, O4 along
+    the frame, each crank joining one to the coupler at A, C, D, B; an askew crank leans 35° off the others."""
+    if case not in PARALLEL_CASES:
+        raise ValueError(f"no case {case!r}; the catalogue has {', '.join(PARALLEL_CASES)}")
+    count = {"four-bar": 2, "four cranks": 4}.get(case, 3)
+    names = (("O2", "A"), ("O6", "C"), ("O8", "D"), ("O4", "B"))
+    chosen = [names[0]] + list(names[1:count - 1]) + [names[3]]
+    spacing = 7.0 / (count - 1)
+    points = {}
+    for k, (pivot, pin) in enumerate(chosen):
+        o = (1.0 + k * spacing, 1.0 + PIVOT_RISE[k])
+        points[pin] = (o[0] + CRANK * math.cos(theta), o[1] + CRANK * math.sin(theta))
+        points[pivot] = o
+    if case.endswith("askew"):
+        pivot, pin = chosen[1]
+        lean = theta + math.radians(35)
+        points[pivot] = (points[pin][0] - CRANK * math.cos(lean), points[pin][1] - CRANK * math.sin(lean))
+    coupler = Link(tuple(pin for _, pin in chosen), "plate" if count > 2 else "bar")
+    cranks = tuple(Link((pivot, pin)) for pivot, pin in chosen)
+    mech = Mechanism(points, tuple(pivot for pivot, _ in chosen), (cranks[0], coupler) + cranks[1:])
+    return mirrored(mech) if mirror else mech

@@ -100,3 +100,76 @@ class Mechanism:
     def shared_extra(self) -> int:
         """Joints lost by counting each pin once however many links meet there."""
         return sum(k - 1 for k in self.pins().values() if k >= 2)
+
+
+def instantaneous_mobility(mech: Mechanism, tolerance: float = 1e-9) -> int:
+    """The mobility the drawn geometry really has (what seize-and-fix finds, §7.4): the freedoms 3 per
+    moving link less the rank of the joints' constraints on small motions at the drawn position. Gruebler's
+    count assumes every constraint independent; a redundant one (a crank parallel and equal to another, in a
+    parallelogram) takes nothing away, so the rank, not the count, says how many inputs the linkage needs."""
+    index = {i: i for i in range(len(mech.links))}
+    rows: list[list[float]] = []
+
+    def motion(body: int, point: tuple[float, float]) -> list[tuple[list[float], list[float]]]:
+        """The point's small displacement (x and y rows) as a combination of the body's δx, δy, δφ."""
+        x_row, y_row = [0.0] * (3 * len(index)), [0.0] * (3 * len(index))
+        if body != GROUND:
+            origin = mech.points[mech.links[body].points[0]]
+            k = 3 * body
+            x_row[k], x_row[k + 2] = 1.0, -(point[1] - origin[1])
+            y_row[k + 1], y_row[k + 2] = 1.0, point[0] - origin[0]
+        return [(x_row, y_row)]
+
+    def difference(a: int, b: int, point, along=None) -> None:
+        """Rows saying points of bodies a and b at `point` move alike (along `along` only, when given)."""
+        (ax, ay), = motion(a, point)
+        (bx, by), = motion(b, point)
+        dx = [p - q for p, q in zip(ax, bx)]
+        dy = [p - q for p, q in zip(ay, by)]
+        if along is None:
+            rows.extend([dx, dy])
+        else:
+            rows.append([along[0] * u + along[1] * v for u, v in zip(dx, dy)])
+
+    def rotation(a: int, b: int) -> None:
+        row = [0.0] * (3 * len(index))
+        if a != GROUND:
+            row[3 * a + 2] += 1.0
+        if b != GROUND:
+            row[3 * b + 2] -= 1.0
+        rows.append(row)
+
+    for name in mech.points:
+        bodies = mech.bodies_at(name)
+        for other in bodies[1:]:
+            difference(bodies[0], other, mech.points[name])
+    for s in mech.sliders:
+        normal = (-s.direction[1], s.direction[0])
+        difference(s.block, s.guide, mech.points[s.point], normal)
+        rotation(s.block, s.guide)
+    for s in mech.slots:
+        normal = (-s.direction[1], s.direction[0])
+        difference(s.pin_link, s.body, mech.points[s.point], normal)
+    for m in mech.meshes:
+        ca, cb = (mech.points[mech.links[g].points[0]] for g in (m.a, m.b))
+        tangent = (-(cb[1] - ca[1]), cb[0] - ca[0])
+        difference(m.a, m.b, mech.points[m.contact], tangent)
+    return 3 * len(mech.links) - _rank(rows, tolerance)
+
+
+def _rank(rows: list[list[float]], tolerance: float) -> int:
+    """The rank of a small matrix, by Gaussian elimination with partial pivoting."""
+    matrix = [list(r) for r in rows]
+    rank, columns = 0, len(matrix[0]) if matrix else 0
+    scale = max((abs(v) for r in matrix for v in r), default=1.0) or 1.0
+    for col in range(columns):
+        pivot = max(range(rank, len(matrix)), key=lambda i: abs(matrix[i][col]), default=None)
+        if pivot is None or abs(matrix[pivot][col]) <= tolerance * scale:
+            continue
+        matrix[rank], matrix[pivot] = matrix[pivot], matrix[rank]
+        for i in range(len(matrix)):
+            if i != rank and matrix[i][col]:
+                factor = matrix[i][col] / matrix[rank][col]
+                matrix[i] = [a - factor * b for a, b in zip(matrix[i], matrix[rank])]
+        rank += 1
+    return rank

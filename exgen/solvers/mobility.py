@@ -6,8 +6,8 @@ slot, a gear mesh), then M = 3(L - 1) - 2 J1 - J2.
 """
 from __future__ import annotations
 
-from ..mechanics.mechanism_catalogue import build, misleading
-from ..mechanics.mobility import mobility as kutzbach
+from ..mechanics.mechanism_catalogue import build, misleading, parallel_cranks
+from ..mechanics.mobility import instantaneous_mobility, mobility as kutzbach
 
 
 def mechanism_of(p):
@@ -64,3 +64,38 @@ def _mistakes(d, mech, links, j1, j2) -> None:
     if mech.sliders:
         d.mistake("J1", "slider_not_counted", j1 - len(mech.sliders))
         d.mistake("M", "slider_not_counted", kutzbach(links, j1 - len(mech.sliders), j2))
+
+
+TRUE_REASON = {
+    "four-bar": "a parallelogram four-bar: the count is right, one input drives it",
+    "three cranks": "crank 4 is parallel and equal to the others, so it moves exactly as the coupler "
+                    "already carries it: its two joints take away no freedom, and the linkage still moves",
+    "four cranks": "the extra cranks are parallel and equal to the others, so each moves exactly as the coupler "
+                   "already carries it: their joints take away no freedom, and the linkage still moves",
+    "three cranks, one askew": "crank 4 is not parallel to the others: its pin on the coupler must go round a "
+                               "circle about a point other than crank 4's pivot, so nothing can move at all",
+}
+
+
+def mobility_exceptions(p, d):
+    """§7.4: Gruebler's count of a parallelogram linkage with extra cranks, then the mobility its geometry gives
+    (seize-and-fix), which the count cannot see."""
+    case = str(p.case)
+    mech = parallel_cranks(case, p.theta, str(p.mirror) == "yes")
+    links = d.step("L", mech.link_count, "", symbol="L",
+                   note=f"the ground (link 1), the coupler and {_plural(len(mech.links) - 1, 'crank')}")
+    j1 = d.step("J1", mech.lower_pairs, "", symbol="J_1", note=f"{_plural(len(mech.pins()), 'pin')}, no sliders")
+    m = d.step("M", kutzbach(links, j1, 0), "", symbol="M", formula=r"3(@L - 1) - 2\,@J1 - 0",
+               note="eq 7.1, with no higher pairs")
+    true = d.step("M_true", instantaneous_mobility(mech), "", symbol=r"M_{\mathrm{true}}", note=TRUE_REASON[case])
+    kind = "mechanism" if true >= 1 else "structure"
+    d.step("kind", kind, "", symbol=r"\text{verdict}",
+           note="it moves: one input drives it" if true >= 1 else "nothing can move: a structure")
+    d.mistake("L", "ground_not_counted", links - 1)
+    d.mistake("M", "ground_not_counted", kutzbach(links - 1, j1, 0))
+    d.mistake("M", "without_minus_one", 3 * links - 2 * j1)
+    if true != m:
+        d.mistake("M_true", "gruebler_trusted", m)
+    gruebler_kind = "mechanism" if m >= 1 else "structure"
+    if gruebler_kind != kind:
+        d.mistake("kind", "gruebler_trusted", gruebler_kind)
