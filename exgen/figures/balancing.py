@@ -140,3 +140,21 @@ def shaft_bearings(variant) -> str:
               _mass_spoke(variant, "C", "mC", "rC", "thetaC")]
     _place_end_view(d, spokes, Convention(0.0, False, FROM_RIGHT.format(name="A")), "seen from the end at A")
     return d.svg("Shaft with masses A, B, C in bearings X and Y")
+
+
+def shaft_four_masses(variant) -> str:
+    """§2.1: four masses in planes A to D an equal distance apart; masses at one angle share a spoke."""
+    pitch = _si(variant, "a")
+    planes = [Plane(tag, k * pitch, "mass", (tag + (" (ref.)" if tag == "A" else ""),
+                                             _value(variant, "mD" if tag == "D" else "m")))
+              for k, tag in enumerate("ABCD")]
+    d = Drawing()
+    x_of = side_view(d, planes)
+    chain(d, x_of, [(k * pitch, (k + 1) * pitch, _value(variant, "a")) for k in range(3)], DIM_ROW)
+    groups: dict[int, list[str]] = {}
+    for tag in "ABCD":
+        groups.setdefault(round(math.degrees(variant.step(f"theta{tag}").value)) % 360, []).append(tag)
+    spokes = [Spoke(",".join(tags), f"{', '.join(tags)}: {deg}°", 1.0, math.radians(deg)) for deg, tags in
+              sorted(groups.items())]
+    _place_end_view(d, spokes, Convention(0.0, False, "0°"), f"all at r = {_value(variant, 'r')}")
+    return d.svg("Shaft with four masses in planes A to D; angles from a reference line in the direction of rotation")

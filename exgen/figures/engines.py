@@ -40,6 +40,7 @@ def inline_cranks(variant) -> str:
               for i in range(1, 5)]
     centre = (d.box[2] + GAP + OUTLINE, 0.0)
     end_view(d, centre, spokes, Convention(-math.pi / 2, True, STROKE_LINE), "angles in the direction of rotation")
+    fit_width(d, MIN_WIDTH)
     return d.svg("Four-cylinder in-line engine: cylinder pitch and crank angles")
 
 

@@ -202,3 +202,34 @@ def crank_diagrams(variant) -> str:
 
 
 FROM_VERTICAL_LINE = Convention(-math.pi / 2, True, "0°")
+
+
+def _engine_sides(variant, harmonic: int, couple: bool) -> list[Side]:
+    """Example 2.6's sides: each crank's force (m r ω², or over n for the secondary) at kθ, times its signed
+    distance x from the centre plane for a couple."""
+    pitch = _si(variant, "a")
+    size = _si(variant, "F1" if harmonic == 1 else "F2")
+    sides = []
+    for i in range(1, 5):
+        x = (i - 2.5) * pitch
+        sides.append(Side(str(i), size * (x if couple else 1.0), harmonic * _si(variant, f"theta{i}")))
+    return sides
+
+
+def engine_primary_polygons(variant) -> str:
+    """Example 2.6: the primary force polygon and the primary couple polygon about the centre plane, each
+    closed by the force or couple that balances it."""
+    return panels("Primary force and couple polygons, each closed by what balances it",
+                  (_engine_sides(variant, 1, False), side(variant, "Fp", "Fp", "theta_Fp"), "N",
+                   "primary forces, at θ", FROM_VERTICAL),
+                  (_engine_sides(variant, 1, True), side(variant, "Cp", "Cp", "theta_Cp"), "N*m",
+                   "primary couples, x from the centre", FROM_VERTICAL))
+
+
+def engine_secondary_polygons(variant) -> str:
+    """Example 2.6: the secondary polygons, cranks at 2θ, each side m r ω²/n."""
+    return panels("Secondary force and couple polygons (cranks at 2θ), each closed by what balances it",
+                  (_engine_sides(variant, 2, False), side(variant, "Fs", "Fs", "theta_Fs"), "N",
+                   "secondary forces, at 2θ", FROM_VERTICAL),
+                  (_engine_sides(variant, 2, True), side(variant, "Cs", "Cs", "theta_Cs"), "N*m",
+                   "secondary couples, at 2θ", FROM_VERTICAL))
