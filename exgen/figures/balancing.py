@@ -156,5 +156,5 @@ def shaft_four_masses(variant) -> str:
         groups.setdefault(round(math.degrees(variant.step(f"theta{tag}").value)) % 360, []).append(tag)
     spokes = [Spoke(",".join(tags), f"{', '.join(tags)}: {deg}°", 1.0, math.radians(deg)) for deg, tags in
               sorted(groups.items())]
-    _place_end_view(d, spokes, Convention(0.0, False, "0°"), f"all at r = {_value(variant, 'r')}")
+    _place_end_view(d, spokes, Convention(0.0, False, "reference line"), f"all at r = {_value(variant, 'r')}")
     return d.svg("Shaft with four masses in planes A to D; angles from a reference line in the direction of rotation")
