@@ -51,6 +51,8 @@ def test_good_template_loads(tmp_path):
     ("step: 20, unit: rpm", "step: 7, unit: rpm", "t.yaml:6:29: parameter N1, step: (max - min) = 1080 is not a whole number of steps of 7"),
     ("min: 20, max: 50", "min: 50, max: 20", "t.yaml:7:3: parameter d1: needs min <= max and step > 0"),
     ("{min: 40, max: 120, step: 5, unit: cm}", "{min: 40, max: 120, stp: 5, unit: cm}", "t.yaml:8:27: parameter d2, stp: unknown key"),
+    ("G1: {choices: [1, 2], unit: percent}", "G1: {choices: [1, 2], also_solves: [3], unit: percent}",
+     "parameter G1, also_solves: only a parameter whose choices are words takes `also_solves:`"),
     ('["d2 > d1"]', '["d2 > d9"]', "t.yaml:12:11: require, condition 1: names no parameter: d9"),
     ('["d2 > d1"]', '["d2 >"]', "t.yaml:12:11: require, condition 1: cannot read 'd2 >' as an expression"),
     ("{{ d1 }}.", "{{ d3 }}.", "t.yaml:13:1: statement: refers to unknown parameter(s): d3"),
@@ -142,3 +144,19 @@ def test_a_light_load_leaves_code_and_texts_to_the_full_check_and_to_first_use(t
         make_variant(load_template(path, full=False), 1)
     with pytest.raises(BankError, match="no module exgen.solvers.nowhere"):
         load_template(write(tmp_path, GOOD.replace("belts:driven_speed", "nowhere:f")), full=False)
+
+
+def test_a_word_the_template_never_draws_can_still_be_solved(tmp_path, capsys):
+    # also_solves: a textbook's own value no real machine has (Problem 2.4's firing order) is worked by
+    # `exgen solve`, never drawn; any other word is refused naming every word it takes
+    from exgen.check.given import given_values
+    from exgen.errors import ExgenError
+    from exgen.solve.variant import make_variant
+
+    text = GOOD.replace("  t:  {value: 8, unit: mm}", "  t:  {value: 8, unit: mm}\n  belt: {choices: [flat, vee], also_solves: [rope]}")
+    template = load_template(write(tmp_path, text))
+    given = {"N1": "1000 rpm", "d1": "30 cm", "d2": "60 cm", "G1": "1", "G2": "1"}
+    assert given_values(template, {**given, "belt": "rope"})["belt"] == "rope"
+    with pytest.raises(ExgenError, match="belt must be one of flat, vee, rope"):
+        given_values(template, {**given, "belt": "chain"})
+    assert {make_variant(template, seed).param("belt").text for seed in range(40)} == {"flat", "vee"}

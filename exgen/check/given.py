@@ -56,8 +56,9 @@ def given_values(template: Template, given: dict[str, str]) -> dict[str, Decimal
             continue
         text = given[spec.name]
         if spec.choices and all(isinstance(c, str) for c in spec.choices):
-            if text not in spec.choices:
-                raise ExgenError(f"{spec.name} must be one of {', '.join(spec.choices)} (got {text!r})")
+            if text not in spec.choices + spec.also_solves:
+                raise ExgenError(f"{spec.name} must be one of {', '.join(spec.choices + spec.also_solves)} "
+                                 f"(got {text!r})")
             values[spec.name] = text
             continue
         try:

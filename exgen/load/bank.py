@@ -25,7 +25,8 @@ from .versions import data_digest
 BANKS_ENV = "EXGEN_BANKS"
 TEMPLATE_KEYS = {"id", "title", "chapter", "section", "topic", "source", "params", "require",
                  "solver", "statement", "parts", "figure", "key_figures", "report"}
-PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain", "given"}
+PARAM_KEYS = {"unit", "label", "symbol", "min", "max", "step", "choices", "value", "equals", "domain", "given",
+              "also_solves"}
 REPORT_KEYS = {"what", "value", "unit", "range"}
 PART_KEYS = {"id", "ask", "answer", "unit", "type", "tol", "points", "mistakes", "uses", "hints"}  # and the type's own
 MAX_VALUES = 100_000
@@ -208,7 +209,8 @@ class _Reader:
                 if not isinstance(choices, list) or not choices:
                     self.error(where + ("choices",), "must be a non-empty list")
                     continue
-                out.append(ParamSpec(**common, choices=tuple(self.number_or_text(c) for c in choices)))
+                words = tuple(self.number_or_text(c) for c in choices)
+                out.append(ParamSpec(**common, choices=words, also_solves=self.also_solves(spec, words, where)))
             else:
                 bounds = [self.decimal(spec.get(k), where + (k,)) for k in ("min", "max", "step")]
                 if None in bounds:
@@ -231,6 +233,19 @@ class _Reader:
                 self.error(("params", spec.name), f"draws {outside[0]:g}, outside its domain "
                                                   f"{domain_of(spec).text()} (give `domain:` if that is wrong)")
         return tuple(out)
+
+    def also_solves(self, spec, words, where) -> tuple:
+        """`also_solves:` words `exgen solve` accepts beside a word parameter's choices (never drawn)."""
+        extra = spec.get("also_solves")
+        if extra is None:
+            return ()
+        if not all(isinstance(c, str) for c in words):
+            self.error(where + ("also_solves",), "only a parameter whose choices are words takes `also_solves:`")
+            return ()
+        if not isinstance(extra, list) or not extra or not all(isinstance(c, str) for c in extra):
+            self.error(where + ("also_solves",), "must be a non-empty list of words, such as [1-6-3-2-5-4]")
+            return ()
+        return tuple(extra)
 
     def domain(self, text, where) -> str:
         """A declared `domain:` interval, checked now so a typo names its file and line."""

@@ -27,6 +27,8 @@ class ParamSpec:
     equals: str = ""  # a given worked out from earlier ones (e.g. the loop that closes a cycle)
     domain: str = ""  # the values that make physical sense, as an interval (exgen.load.domains); "" derives it
     given: bool = True  # False: it only chooses what the figure draws (the figure is the given), not a key's given
+    # words `exgen solve` accepts besides the choices, never drawn: a textbook's own value no real machine has
+    also_solves: tuple = ()
 
     @property
     def derived(self) -> bool:
