@@ -134,7 +134,7 @@ def _index(per_student: dict[str, tuple[Any, Any]]):
 
 def _other_variant(answers, keys) -> list[dict]:
     """Students whose wrong answers are another student's right ones (and that student's alone)."""
-    evidence: dict[tuple[str, str], list[str]] = defaultdict(list)
+    evidence: dict[tuple[str, str], list[tuple[str, str, str]]] = defaultdict(list)
     for (slot, part_id), wrong in answers.items():
         per_student = keys[(slot, part_id)]
         index = _index(per_student)
@@ -146,22 +146,27 @@ def _other_variant(answers, keys) -> list[dict]:
             if not owners or len(owners) > MAX_SHARED:
                 continue
             for owner in owners:
-                evidence[(student, owner)].append(
+                evidence[(student, owner)].append((slot, part_id,
                     f"{slot} ({part_id}): {typed} is {owner}'s answer "
-                    f"({_text(spec, per_student[owner][0])}); {student}'s is {_text(spec, per_student[student][0])}")
+                    f"({_text(spec, per_student[owner][0])}); {student}'s is {_text(spec, per_student[student][0])}"))
     return [{"kind": OTHER_VARIANT, "students": [a, b], "strength": len(found),
              "summary": f"{a} handed in {len(found)} answers that are wrong for {a}'s sheet and right for {b}'s",
-             "evidence": found}
+             "evidence": [line for _, _, line in found], "parts": _parts(found, [a])}
             for (a, b), found in _strongest(evidence).items()]
 
 
-def _strongest(evidence: dict[tuple[str, str], list[str]]) -> dict[tuple[str, str], list[str]]:
+def _parts(found: list[tuple[str, str, str]], students: list[str]) -> list[dict]:
+    """The parts a sign rests on, for each student whose answers they are: what `exgen review` lists."""
+    return [{"student": s, "slot": slot, "part": part} for s in students for slot, part, _ in found]
+
+
+def _strongest(evidence: dict[tuple[str, str], list[tuple[str, str, str]]]) -> dict[tuple[str, str], list]:
     """Per copier, the pairs with at least MIN_PARTS parts no stronger pair explains: answers copied from
     one sheet also match a third student whose numbers happen to be the same in those parts."""
-    kept: dict[tuple[str, str], list[str]] = {}
+    kept: dict[tuple[str, str], list] = {}
     explained: dict[str, set[str]] = defaultdict(set)
     for (a, b), found in sorted(evidence.items(), key=lambda kv: (-len(kv[1]), kv[0])):
-        parts = {line.split(":", 1)[0] for line in found}
+        parts = {(slot, part) for slot, part, _ in found}
         if len(parts - explained[a]) >= MIN_PARTS:
             kept[(a, b)] = found
             explained[a] |= parts
@@ -170,7 +175,7 @@ def _strongest(evidence: dict[tuple[str, str], list[str]]) -> dict[tuple[str, st
 
 def _identical_wrong(answers) -> list[dict]:
     """Pairs of students giving the same wrong values, though their numbers differ."""
-    evidence: dict[tuple[str, str], list[str]] = defaultdict(list)
+    evidence: dict[tuple[str, str], list[tuple[str, str, str]]] = defaultdict(list)
     for (slot, part_id), wrong in answers.items():
         groups: dict[Any, list[str]] = defaultdict(list)
         for student, (value, _) in wrong.items():
@@ -180,10 +185,10 @@ def _identical_wrong(answers) -> list[dict]:
         for students in groups.values():
             if 2 <= len(students) <= MAX_SHARED:
                 a, b = sorted(students)
-                evidence[(a, b)].append(f"{slot} ({part_id}): both answered {wrong[a][1]}")
+                evidence[(a, b)].append((slot, part_id, f"{slot} ({part_id}): both answered {wrong[a][1]}"))
     return [{"kind": IDENTICAL_WRONG, "students": [a, b], "strength": len(found),
              "summary": f"{a} and {b} gave the same {len(found)} wrong answers, though their numbers differ",
-             "evidence": found}
+             "evidence": [line for _, _, line in found], "parts": _parts(found, [a, b])}
             for (a, b), found in evidence.items() if len(found) >= MIN_PARTS]
 
 
@@ -207,7 +212,8 @@ def _other_code(batch, codes: dict[str, str]) -> list[dict]:
         out.append({"kind": OTHER_CODE, "students": students, "strength": 10,
                     "summary": f"{sheet.student.id}'s file carries the sheet code {code}, "
                                + (f"which is {owner}'s" if owner else "which is no one's sheet"),
-                    "evidence": [f"{shown(sheet.path.name, QUOTED)}: code {code}; {sheet.student.id}'s sheet has {own}"]})
+                    "evidence": [f"{shown(sheet.path.name, QUOTED)}: code {code}; {sheet.student.id}'s sheet has {own}"],
+                    "parts": []})
     return out
 
 

@@ -127,3 +127,19 @@ def test_a_part_nobody_got_right_is_flagged_first(simulated):
                 part["status"], part["points"] = "wrong", 0.0
     analysis = analyse(record)
     assert [p.label for p in analysis.nobody_right] == ["q4 (b)"]
+
+
+def test_each_sign_names_the_parts_it_rests_on_and_whose_answers_they_are(simulated):
+    """What `exgen review` lists as flagged: per sign, the parts of its evidence, for the student who handed in
+    another's answers, or for both who gave the same wrong ones; each a wrong answer in the record."""
+    graded, plan, _ = simulated
+    record = read_record(graded)
+    status = {(s["student"]["id"], p["slot"], p["part"]): p["status"] for s in record["sheets"] for p in s["parts"]}
+    for sign in record["signs"]:
+        flagged = {(p["student"], p["slot"], p["part"]) for p in sign["parts"]}
+        told = {tuple(line.split(":", 1)[0].replace("(", "").replace(")", "").split()) for line in sign["evidence"]}
+        whose = {"answers_match_another_sheet": sign["students"][:1], "identical_wrong_answers": sign["students"],
+                 "another_students_sheet_code": []}[sign["kind"]]
+        assert flagged == {(s, slot, part) for s in whose for slot, part in (told if whose else ())}
+        assert all(status[key] == "wrong" for key in flagged)
+    assert sum(len(s["parts"]) for s in record["signs"]) >= 2 * 2
