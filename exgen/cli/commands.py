@@ -347,6 +347,13 @@ def cmd_report(args) -> int:
     return 0
 
 
+def cmd_review(args) -> int:
+    from graders.review_page.server import review
+
+    return review(Path(args.graded), Path(args.decisions) if args.decisions else None, host=args.host, port=args.port,
+                  open_browser=args.open, reviewer=args.reviewer)
+
+
 def cmd_validate(args) -> int:
     from ..check.validate import validate_bank
 

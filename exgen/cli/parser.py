@@ -5,7 +5,7 @@ import argparse
 
 from .. import __version__
 from .commands import (SEED_MAX, cmd_decide, cmd_export, cmd_generate, cmd_grade, cmd_list, cmd_practice,
-                       cmd_report, cmd_serve, cmd_show, cmd_solve, cmd_validate)
+                       cmd_report, cmd_review, cmd_serve, cmd_show, cmd_solve, cmd_validate)
 
 
 def _count(minimum: int, maximum: int | None = None):
@@ -224,6 +224,24 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
     p.add_argument("--out", help="where to write the pages (default: that folder)")
     p.set_defaults(func=cmd_report)
+
+    p = _command(sub, "review", "decide in the browser what grading could not: format problems, blanks, copying",
+                 "Open a page on this computer listing every answer of a grading run that needs a human: each\n"
+                 "format problem, each blank on a sheet whose other parts were answered, each part a sign of\n"
+                 "copying rests on; the same text typed by many students stands as one row. Accept it (full or\n"
+                 "part marks), reject it with a comment, or accept its spelling for everyone; each decision, with\n"
+                 "the reviewer's name and a reason, goes to the decisions file, which `exgen grade` applies when\n"
+                 "run again.",
+                 "exgen review graded/tutorial1 --open", "exgen review graded/tutorial1 --reviewer \"A. Lecturer\"")
+    p.add_argument("graded", help="the folder `exgen grade` wrote (its --out)")
+    p.add_argument("--decisions", metavar="FILE", help="the decisions file (default: GRADED.decisions.yaml, beside "
+                                                       "the folder; created at the first decision)")
+    p.add_argument("--reviewer", default="", help="the name each decision is signed with (it can be changed on the page)")
+    p.add_argument("--host", default="127.0.0.1", help="loopback address to listen on (default %(default)s; the page "
+                                                       "never listens where another computer can reach it)")
+    p.add_argument("--port", type=_count(0, 65535), default=8001, help="port (default %(default)s; 0: any free one)")
+    p.add_argument("--open", action="store_true", help="open the page in the web browser")
+    p.set_defaults(func=cmd_review)
 
     p = _command(sub, "export", "a pool of variants per question for a learning system (Moodle, QTI 2.1, Canvas)",
                  "Write a question pool for a learning system: each question of an assignment (or each template\n"
