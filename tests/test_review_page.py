@@ -4,6 +4,7 @@ question and part, and writes each decision through graders.decisions to the dec
 a form it cannot use is said beside its field; requests from elsewhere, for another host, with a stale
 token, or a listening address another computer could reach are refused."""
 import hashlib
+import html
 import socket
 
 import pytest
@@ -94,7 +95,7 @@ def test_each_answer_stands_under_its_reason_with_its_text_key_and_the_graders_w
     assert "Grader said" in article and "unknown unit" in article
     copied = group_of(state, "q1", "a", graded.keys[rc.SOURCE]["q1"]["a"])
     article = page.split(f'id="g-{copied.id}"', 1)[1].split("</article>", 1)[0]
-    assert f"is {rc.SOURCE}'s answer" in article  # the evidence, beside the answer it is about
+    assert f"is {rc.SOURCE}'s answer" in html.unescape(article)  # the evidence, beside the answer it is about
     assert page.index("Format problem") < page.index("Blank where other parts were answered") \
         < page.index("Flagged by signs of copying")
 
@@ -120,7 +121,7 @@ def test_only_text_that_could_not_be_read_can_be_accepted_as_a_spelling_for_ever
 
 
 @pytest.mark.parametrize("query, shown", [
-    ("question=2", {("q2", "b")}),
+    ("question=2", {("q2", "a"), ("q2", "b"), ("q2", "c"), ("q2", "d")}),
     ("question=2&part=b", {("q2", "b")}),
     ("part=a", {("q1", "a"), ("q2", "a")}),
     ("question=1&part=c", {("q1", "c")}),
@@ -203,8 +204,20 @@ def test_a_form_that_cannot_be_used_is_said_beside_its_field_and_nothing_is_writ
     error = article.split(f'id="error-{group.id}" role="alert">', 1)[1].split("</p>", 1)[0]
     assert says in error
     described = f'aria-invalid="true" aria-describedby="error-{group.id}" autofocus'
-    assert article.count(described) == 1 and f'name="{field}"' in article.split(described)[0].rsplit("<", 1)[1] \
-        or (field == "decision" and f'<fieldset class="choices" {described}' in article)
+    assert article.count(described) == 1  # the field at fault, and it alone, takes the focus
+    element = article.split(described)[0].rsplit("<", 1)[1]
+    assert element.startswith('fieldset class="choices"') if field == "decision" else f'name="{field}"' in element
+
+
+def test_what_a_spelling_is_accepted_as_must_read_as_an_answer_of_the_part(graded, bank, tmp_path):
+    state = Review(graded.graded, tmp_path / "decisions.yaml", bank=lambda: bank)
+    with TestClient(create_app(state, loopback_hosts(8001)), base_url=HOST) as client:
+        wordy = group_of(state, "q1", "a", rc.UNIT_WORD)
+        refused = post(client, wordy, decision="alias", means="fast")
+        assert refused.status_code == 400 and "not an answer the part reads" in html.unescape(refused.text)
+        assert not state.decisions_path.exists()
+        assert post(client, wordy, decision="alias", means="348.3 rpm").status_code == 303
+        assert [a.means for a in load_decisions(state.decisions_path).aliases] == ["348.3 rpm"]
 
 
 def test_a_blank_cannot_be_accepted_as_a_spelling(state, client):
@@ -228,7 +241,8 @@ def test_other_hosts_other_sites_and_stale_tokens_are_refused(state, client):
     assert client.post("/decide", data={k: v for k, v in good.items() if k != "token"}).status_code == 403
     assert client.post("/decide", data={**good, "reason": "9" * (MAX_BODY + 10)}).status_code == 413
     assert not state.decisions_path.exists()
-    assert client.post("/decide", data=good, headers={"origin": HOST}).status_code == 303  # its own page's
+    own = client.post("/decide", data=good, headers={"origin": HOST}, follow_redirects=False)
+    assert own.status_code == 303  # from its own page
 
 
 def test_every_page_forbids_scripts_from_anywhere_and_serves_only_its_own_files(client):
@@ -238,8 +252,9 @@ def test_every_page_forbids_scripts_from_anywhere_and_serves_only_its_own_files(
     css = client.get("/static/review.css")
     assert css.status_code == 200 and css.headers["content-type"].startswith("text/css")
     assert client.get("/static/review.css", headers={"if-none-match": css.headers["etag"]}).status_code == 304
-    for path in ("/static/../app.py", "/static/%2e%2e%2fapp.py", "/static/app.py", "/nowhere", "/decide"):
+    for path in ("/static/../app.py", "/static/%2e%2e%2fapp.py", "/static/app.py", "/nowhere"):
         assert client.get(path).status_code == 404
+    assert client.get("/decide").status_code == 405
 
 
 @pytest.mark.parametrize("host", ["0.0.0.0", "::", "192.168.1.10", "example.org"])

@@ -351,7 +351,7 @@ def cmd_review(args) -> int:
     from graders.review_page.server import review
 
     return review(Path(args.graded), Path(args.decisions) if args.decisions else None, host=args.host, port=args.port,
-                  open_browser=args.open, reviewer=args.reviewer)
+                  open_browser=args.open, reviewer=args.reviewer, bank=lambda: _bank(args))
 
 
 def cmd_validate(args) -> int:

@@ -39,8 +39,11 @@ log = logging.getLogger("review")
 class Review:
     """The graded folder and its decisions file, read fresh when they change."""
 
-    def __init__(self, graded: Path, decisions_path: Path, reviewer: str = ""):
+    def __init__(self, graded: Path, decisions_path: Path, reviewer: str = "", bank=None):
+        """`bank`: the templates, or a function that loads them (called once, when a spelling is first
+        accepted for a part that is not a choice), to check what it is accepted as."""
         self.graded, self.decisions_path, self.reviewer = Path(graded), Path(decisions_path), reviewer
+        self._bank = bank
         self._record, self._stamp = None, None
         self.said: tuple[str, str] = ("", "")  # (group, what was decided for it), shown once after the redirect
         self.lock = threading.Lock()  # one decision written at a time
@@ -61,6 +64,17 @@ class Review:
 
     def queue(self) -> Queue:
         return build_queue(self.record(), self.decisions())
+
+    def spec(self, template: str, part: str):
+        """The part's PartSpec from the bank, None without a bank or if the bank no longer has it."""
+        if callable(self._bank):
+            self._bank = self._bank()
+        if self._bank is None:
+            return None
+        try:
+            return self._bank.get(template).part(part)
+        except (ExgenError, KeyError, LookupError):
+            return None
 
 
 def view_of(query) -> dict:
@@ -124,7 +138,8 @@ def create_app(review: Review, allowed_hosts: tuple[str, ...] | None):
             if group is None:
                 raise BadRequest(404, "that answer is no longer listed (graded again since?): reload the page")
             try:
-                decisions, said = decide(review.decisions(), group, form)
+                spec = review.spec(group.template, group.part) if form.get("decision") == "alias" else None
+                decisions, said = decide(review.decisions(), group, form, spec)
             except Invalid as exc:
                 return page(view, invalid={"group": group.id, "field": exc.name, "message": exc.message,
                                            "values": form}, status=400)

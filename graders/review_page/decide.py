@@ -9,6 +9,7 @@ import math
 from exgen.echo import shown
 
 from ..decisions import ACCEPT, ANSWER_LENGTH, COMMENT_LENGTH, REJECT, TEXT_LENGTH, Alias, Decision, Decisions
+from ..review import reading_problem
 from .queue import Group
 
 ALIAS = "alias"
@@ -25,9 +26,10 @@ class Invalid(Exception):
         self.name, self.message = name, message
 
 
-def decide(decisions: Decisions, group: Group, form: dict[str, str]) -> tuple[Decisions, str]:
+def decide(decisions: Decisions, group: Group, form: dict[str, str], spec=None) -> tuple[Decisions, str]:
     """The decisions with this form's added (replacing any on the same answers), and a sentence saying what
-    was decided for whom."""
+    was decided for whom. `spec`: the part's PartSpec, if the bank has it, to check that what a spelling is
+    accepted as is an answer the part reads (as `exgen grade` will read it)."""
     choice = form.get("decision", "")
     if choice not in CHOICES or (choice == ALIAS and not group.spelling_can_be_accepted):
         raise Invalid("decision", "choose accept, reject" + (" or accept this spelling for everyone"
@@ -38,6 +40,9 @@ def decide(decisions: Decisions, group: Group, form: dict[str, str]) -> tuple[De
         means = _text(form, "means", ANSWER_LENGTH, "what the spelling means (as the key writes it)")
         if group.choices and means not in group.choices:
             raise Invalid("means", "choose what the spelling means from the part's choices")
+        problem = reading_problem(means, spec) if spec is not None else None
+        if problem:
+            raise Invalid("means", f"“{means}” {problem}")
         if means.casefold() == group.given.casefold():
             raise Invalid("means", "give what the spelling means, not the spelling itself")
         alias = Alias(group.question, group.part, group.template, group.given, means, reviewer, reason)

@@ -17,11 +17,13 @@ NOT_LOCAL = ("exgen review listens on this computer only (--host {allowed}): the
 
 
 def review(graded: Path, decisions: Path | None = None, host: str = "127.0.0.1", port: int = 8001,
-           open_browser: bool = False, reviewer: str = "", announce=print) -> int:
+           open_browser: bool = False, reviewer: str = "", bank=None, announce=print) -> int:
+    """Serve the review page of `graded` until Ctrl+C; `bank` (or a function loading it) checks what a
+    spelling is accepted as."""
     if not is_loopback(host):
         raise ExgenError(NOT_LOCAL.format(allowed=", ".join(LOOPBACK_HOSTS), host=host))
     graded = Path(graded)
-    state = Review(graded, Path(decisions) if decisions else default_path(graded), reviewer)
+    state = Review(graded, Path(decisions) if decisions else default_path(graded), reviewer, bank)
     queue = state.queue()  # results.json and the decisions file are read now: a problem is one line, before listening
     sock = listen(host, port, command="review")
     app = create_app(state, loopback_hosts(sock.getsockname()[1]))
