@@ -294,3 +294,30 @@ def test_the_queue_reads_a_record_written_by_this_exgen_only_through_its_fields(
         part.update(given="", status="blank")
     queue = build_queue(record, load_decisions(graded.decisions))
     assert rc.BLANKER not in {a.student for g in queue.groups for a in g.answers}
+
+
+def test_decided_on_the_page_then_graded_again_the_marks_change_and_the_page_says_so(tmp_path):
+    """The page writes; `exgen grade` run again applies: the feedback says marked by hand, and the page shows
+    each decided answer as applied, still listed for what the grader gave before."""
+    graded = rc.graded_class(tmp_path)
+    state = Review(graded.graded, graded.decisions, reviewer="A. Lecturer")
+    with TestClient(create_app(state, loopback_hosts(8001)), base_url=HOST) as client:
+        wordy = group_of(state, "q1", "a", rc.UNIT_WORD)
+        assert post(client, wordy, decision="accept", points="0.5", comment="the number is right").status_code == 303
+        spelled = group_of(state, "q2", "b", rc.SPELLING)
+        assert post(client, spelled, decision="alias", means="raises the bow").status_code == 303
+        assert graded.grade() == 0
+        feedback = (graded.graded / "feedback" / f"{rc.WORDY}.md").read_text(encoding="utf-8")
+        assert "Marked by hand: the number is right." in feedback
+        page = html.unescape(client.get("/?show=all").text)
+        queue = state.queue()
+        planted = len(rc.SPELLERS) + 3 + len(rc.COPIED)  # and the wordy, the blank, the hostile
+        assert (queue.answers, queue.open_answers) == (planted, planted - len(rc.SPELLERS) - 1)
+        said = " ".join(page.replace("<strong>", "").replace("</strong>", "").split())
+        assert f"{planted} answers need a human here, {planted - len(rc.SPELLERS) - 1} still to decide" in said
+        article = page.split(f'id="g-{wordy.id}"', 1)[1].split("</article>", 1)[0]
+        assert "applied: now 0.5 / 1 (was 0)" in article and "Change the decision" in article
+        article = page.split(f'id="g-{spelled.id}"', 1)[1].split("</article>", 1)[0]
+        right = [s for s in rc.SPELLERS if graded.keys[s]["q2"]["b"] == "raises the bow"]
+        assert article.count("read as “raises the bow”: now 1 / 1 (was 0)") == len(right)
+        assert article.count("read as “raises the bow”: now 0 / 1 (was 0)") == len(rc.SPELLERS) - len(right)

@@ -81,8 +81,9 @@ class Group:
 
     @property
     def message(self) -> str:
-        """What the grader said, when it said the same to every student of the group."""
-        said = {a.message for a in self.answers}
+        """What the grader said, when it said the same to every student of the group (before any review: what
+        a part marked by review says is review's)."""
+        said = {a.message for a in self.answers if a.applied is None}
         return said.pop() if len(said) == 1 else ""
 
     @property
