@@ -58,6 +58,7 @@ class Graded:
 
 def graded_class(root: Path) -> Graded:
     root = Path(root)
+    root.mkdir(parents=True, exist_ok=True)
     (root / "course.secret").write_text(SECRET + "\n", encoding="utf-8")
     (root / "course.secret").chmod(0o600)
     (root / "roster.csv").write_text("id,name\n" + "".join(f"{s},{n}\n" for s, n in zip(STUDENTS, NAMES)),

@@ -12,10 +12,11 @@ from practice_server import _address
 
 
 @contextmanager
-def running_review(graded: Path, *extra: str):
+def running_review(graded: Path, *extra: str, cwd: Path | None = None):
+    """The server's address; `cwd`: where the lecturer runs it (paths on the page are as given)."""
     env = {**os.environ, "PYTHONUNBUFFERED": "1", "PYTHONIOENCODING": "utf-8"}
     process = subprocess.Popen([sys.executable, "-m", "exgen.cli", "review", str(graded), "--port", "0", *extra],
-                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env)
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env, cwd=cwd)
     try:
         yield _address(process)
     finally:

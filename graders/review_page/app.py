@@ -25,7 +25,7 @@ from starlette.routing import Route
 from exgen.errors import ExgenError
 from exgen.runtime.localweb import BadRequest, Disconnected, Guard, asset_response, load_assets, read_form
 
-from ..decisions import Decisions, load_decisions, save_decisions
+from ..decisions import Decisions, default_path, load_decisions, save_decisions
 from ..record import RESULTS, read_record
 from . import pages
 from .decide import Invalid, decide
@@ -119,7 +119,7 @@ def create_app(review: Review, allowed_hosts: tuple[str, ...] | None):
     def page(view: dict, saved=None, invalid=None, status: int = 200) -> HTMLResponse:
         return HTMLResponse(pages.review_page(review.queue(), view, token=token, reviewer=review.reviewer,
                                               decisions_path=str(review.decisions_path), graded=str(review.graded),
-                                              saved=saved, invalid=invalid), status_code=status)
+                                              beside=review.decisions_path == default_path(review.graded), saved=saved, invalid=invalid), status_code=status)
 
     def home(request, form):
         view = view_of(request.query_params)

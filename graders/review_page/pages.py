@@ -6,7 +6,7 @@ from functools import lru_cache
 
 import jinja2
 
-from .queue import KINDS, Group, Queue
+from .queue import KINDS, Queue
 
 
 @lru_cache(maxsize=1)
@@ -26,9 +26,11 @@ def points(value: float | None) -> str:
 
 
 def review_page(queue: Queue, view: dict, *, token: str, reviewer: str, decisions_path: str, graded: str,
-                saved: Group | None = None, invalid: dict | None = None) -> str:
+                beside: bool = True, saved: dict | None = None, invalid: dict | None = None) -> str:
     """The list of what needs a human under the filters of `view` (question, part, everything), with a form
-    per group. `invalid`: a form sent back with what is wrong in it (group, field, message, values)."""
+    per group. `beside`: the decisions file is the default one, which `exgen grade` finds itself. `saved`: the
+    group just decided and what was said of it. `invalid`: a form sent back with what is wrong in it (group,
+    field, message, values)."""
     question = view.get("question")
     groups = queue.shown(question, view.get("part", ""), view.get("everything", False))
     sections = []
@@ -43,7 +45,7 @@ def review_page(queue: Queue, view: dict, *, token: str, reviewer: str, decision
             open_by_question[g.question] = open_by_question.get(g.question, 0) + len(g.answers)
     parts = [(q.number, p) for q in queue.questions for p in q.parts if question is None or q.number == question]
     return render("review.html", queue=queue, sections=sections, view=view, token=token, reviewer=reviewer,
-                  decisions_path=decisions_path, graded=graded, saved=saved, invalid=invalid or {},
+                  decisions_path=decisions_path, graded=graded, beside=beside, saved=saved, invalid=invalid or {},
                   parts=parts, points=points, shown=len(groups), kinds=KINDS,
                   open_by_question=open_by_question)
 
