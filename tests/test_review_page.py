@@ -322,3 +322,30 @@ def test_decided_on_the_page_then_graded_again_the_marks_change_and_the_page_say
         right = [s for s in rc.SPELLERS if graded.keys[s]["q2"]["b"] == "raises the bow"]
         assert article.count("read as “raises the bow”: now 1 / 1 (was 0)") == len(right)
         assert article.count("read as “raises the bow”: now 0 / 1 (was 0)") == len(rc.SPELLERS) - len(right)
+
+
+def test_a_decision_made_on_other_text_is_shown_as_not_matching_and_the_answer_stays_open(graded, state, client):
+    from graders.decisions import Decision, Decisions, save_decisions
+
+    earlier = Decision(rc.WORDY, 1, "a", "348.3", "accept", "A. Lecturer", "an earlier hand-in",
+                       template="belts.driven_speed_slip")
+    save_decisions(Decisions("review-demo").with_decision(earlier), state.decisions_path)
+    wordy = group_of(state, "q1", "a", rc.UNIT_WORD)
+    assert not wordy.decided and wordy.stale[0].stale == earlier
+    article = html.unescape(client.get("/").text).split(f'id="g-{wordy.id}"', 1)[1].split("</article>", 1)[0]
+    assert "a decision made on “348.3” no longer matches: not applied" in article
+
+
+def test_a_run_with_nothing_to_review_says_so(graded):
+    from graders.review_page import pages
+    from graders.decisions import Decisions
+
+    record = read_record(graded.graded)
+    for sheet in record["sheets"]:
+        for part in sheet["parts"]:
+            part["status"] = "correct"
+    record["signs"] = []
+    queue = build_queue(record, Decisions("review-demo"))
+    page = pages.review_page(queue, {"question": None, "part": "", "everything": False}, token="t", reviewer="",
+                             decisions_path="d.yaml", graded="g")
+    assert queue.groups == () and "Nothing in this grading run needs a human" in page and "<form class=\"decide\"" not in page

@@ -14,7 +14,6 @@ import logging
 import secrets
 import threading
 from pathlib import Path
-from urllib.parse import urlencode
 
 from starlette.applications import Starlette
 from starlette.concurrency import run_in_threadpool
@@ -22,6 +21,7 @@ from starlette.requests import Request
 from starlette.responses import HTMLResponse, RedirectResponse, Response
 from starlette.routing import Route
 
+from exgen.echo import shown
 from exgen.errors import ExgenError
 from exgen.runtime.localweb import BadRequest, Disconnected, Guard, asset_response, load_assets, read_form
 
@@ -84,12 +84,6 @@ def view_of(query) -> dict:
             "part": query.get("part", "")[:20], "everything": query.get("show", "") == "all"}
 
 
-def view_query(view: dict, **extra) -> str:
-    fields = {"question": view["question"] if view["question"] is not None else "", "part": view["part"],
-              "show": "all" if view["everything"] else "", **extra}
-    return urlencode({k: v for k, v in fields.items() if v != ""})
-
-
 def create_app(review: Review, allowed_hosts: tuple[str, ...] | None):
     token = secrets.token_urlsafe(24)
     assets = load_assets("graders.review_page")
@@ -145,10 +139,9 @@ def create_app(review: Review, allowed_hosts: tuple[str, ...] | None):
                                            "values": form}, status=400)
             save_decisions(decisions, review.decisions_path)
             review.said = (group.id, said)
-        if review.reviewer != form.get("reviewer", review.reviewer):
-            review.reviewer = form["reviewer"]  # the next form is filled in with it
+        review.reviewer = shown(form.get("reviewer", ""), 200) or review.reviewer  # the next form is filled in with it
         log.info("review: %s", said)
-        return RedirectResponse("/?" + view_query(view, saved=group.id) + "#saved", status_code=303)
+        return RedirectResponse("/?" + pages.view_query(view, saved=group.id) + "#saved", status_code=303)
 
     async def static(request: Request) -> Response:
         asset = assets.get(request.path_params["name"])

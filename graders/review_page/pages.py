@@ -3,6 +3,7 @@ strings the layout escapes)."""
 from __future__ import annotations
 
 from functools import lru_cache
+from urllib.parse import urlencode
 
 import jinja2
 
@@ -47,7 +48,14 @@ def review_page(queue: Queue, view: dict, *, token: str, reviewer: str, decision
     return render("review.html", queue=queue, sections=sections, view=view, token=token, reviewer=reviewer,
                   decisions_path=decisions_path, graded=graded, beside=beside, saved=saved, invalid=invalid or {},
                   parts=parts, points=points, shown=len(groups), kinds=KINDS,
-                  open_by_question=open_by_question)
+                  open_by_question=open_by_question, show_all="/?" + view_query({**view, "everything": True}))
+
+
+def view_query(view: dict, **extra) -> str:
+    """The query string of a view (its filters), with `extra` fields."""
+    fields = {"question": view["question"] if view["question"] is not None else "", "part": view["part"],
+              "show": "all" if view["everything"] else "", **extra}
+    return urlencode({k: v for k, v in fields.items() if v != ""})
 
 
 def error_page(status: int, title: str, message: str) -> str:
