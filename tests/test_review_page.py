@@ -349,3 +349,15 @@ def test_a_run_with_nothing_to_review_says_so(graded):
     page = pages.review_page(queue, {"question": None, "part": "", "everything": False}, token="t", reviewer="",
                              decisions_path="d.yaml", graded="g")
     assert queue.groups == () and "Nothing in this grading run needs a human" in page and "<form class=\"decide\"" not in page
+
+
+def test_the_decisions_on_a_row_can_be_taken_back(state, client):
+    spelled = group_of(state, "q2", "b", rc.SPELLING)
+    assert post(client, spelled, decision="alias", means="raises the bow").status_code == 303
+    assert post(client, spelled, decision="accept", student=rc.SPELLERS[0]).status_code == 303
+    article = client.get("/?show=all").text.split(f'id="g-{spelled.id}"', 1)[1].split("</article>", 1)[0]
+    assert "Take back the decisions on these answers" in article
+    assert post(client, spelled, decision="withdraw").status_code == 303
+    assert not load_decisions(state.decisions_path)  # neither the alias nor the student's decision is left
+    assert f'id="g-{spelled.id}"' in client.get("/").text  # open again
+    assert post(client, spelled, decision="withdraw").status_code == 400  # nothing left to take back

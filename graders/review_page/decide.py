@@ -1,7 +1,7 @@
 """A decision sent from the review page, checked and turned into entries of the decisions file: accept
 (full marks, or the points given) or reject with a comment for each student of a group, or one of them;
 or the group's spelling accepted for everyone (an alias of the part). Every one carries the reviewer's
-name and a reason. What a form says is only believed once checked against the group the server holds."""
+name and a reason. The decisions on a group can be taken back. What a form says is only believed once checked against the group the server holds."""
 from __future__ import annotations
 
 import math
@@ -12,7 +12,7 @@ from ..decisions import ACCEPT, ANSWER_LENGTH, COMMENT_LENGTH, REJECT, TEXT_LENG
 from ..review import reading_problem
 from .queue import Group
 
-ALIAS = "alias"
+ALIAS, WITHDRAW = "alias", "withdraw"
 CHOICES = (ACCEPT, REJECT, ALIAS)
 EVERYONE = "*"
 NAME_LENGTH = 200
@@ -31,6 +31,8 @@ def decide(decisions: Decisions, group: Group, form: dict[str, str], spec=None) 
     was decided for whom. `spec`: the part's PartSpec, if the bank has it, to check that what a spelling is
     accepted as is an answer the part reads (as `exgen grade` will read it)."""
     choice = form.get("decision", "")
+    if choice == WITHDRAW:
+        return withdraw(decisions, group)
     if choice not in CHOICES or (choice == ALIAS and not group.spelling_can_be_accepted):
         raise Invalid("decision", "choose accept, reject" + (" or accept this spelling for everyone"
                                                               if group.spelling_can_be_accepted else ""))
@@ -68,6 +70,18 @@ def decide(decisions: Decisions, group: Group, form: dict[str, str], spec=None) 
     what = ("rejected" if choice == REJECT else
             "accepted" + (" for full marks" if points is None else f" for {points:g} of {group.max_points:g}"))
     return decisions, f"question {group.question} ({group.part}) {what} for {whom}"
+
+
+def withdraw(decisions: Decisions, group: Group) -> tuple[Decisions, str]:
+    """The decisions without any on this group's answers: its alias, and each student's decision, whether it
+    still matches the answer or not."""
+    left = decisions.without_alias(group.question, group.part, group.alias.spelling) if group.alias else decisions
+    for answer in group.answers:
+        if answer.decision is not None or answer.stale is not None:
+            left = left.without_decision(answer.student, group.question, group.part)
+    if left == decisions:
+        raise Invalid("decision", "there is no decision on these answers to take back")
+    return left, f"the decisions on question {group.question} ({group.part}) “{group.given}” taken back"
 
 
 def _text(form: dict[str, str], name: str, limit: int, what: str) -> str:
