@@ -144,22 +144,15 @@ def build_queue(record: dict, decisions: Decisions) -> Queue:
         student = sheet["student"]
         answered = sum(1 for p in sheet["parts"] if str(p.get("given", "")).strip())
         for part in sheet["parts"]:
-            applied = part.get("review") or None
-            before = applied.get("status_before", part.get("status")) if applied else part.get("status")
-            kind = _kind(before, answered, flagged.get((student["id"], part["slot"], part["part"])))
             column = columns.get(part["slot"])
+            evidence = tuple(flagged.get((student["id"], part["slot"], part["part"]), ()))
+            applied = part.get("review") or None
+            kind = _kind(applied.get("status_before") if applied else part.get("status"), answered, evidence)
             if kind is None or column is None:
                 continue
-            given = cleaned(part.get("given", ""))
-            number = column["number"]
-            decision = decisions.decision_for(student["id"], number, part["part"])
-            matching = decision if decision is not None and decision.matches(column["template"], given) else None
-            answer = Answer(student["id"], student.get("name", ""), given, str(part.get("expected", "")),
-                            float(part.get("points", 0.0)), float(part.get("max_points", 0.0)),
-                            part.get("mistake") or "", str(part.get("message", "")),
-                            tuple(flagged.get((student["id"], part["slot"], part["part"]), ())),
-                            matching, decision if matching is None else None, applied)
-            groups.setdefault((number, part["part"], list(KINDS).index(kind), given, kind, column["slot"]), []).append(answer)
+            answer = _answer(student, part, column, evidence, applied, decisions)
+            key = (column["number"], part["part"], list(KINDS).index(kind), answer.given, kind, column["slot"])
+            groups.setdefault(key, []).append(answer)
     made = []
     for (number, part_id, _, given, kind, slot), answers in sorted(groups.items(), key=lambda kv: (
             kv[0][0], kv[0][1], kv[0][2], -len(kv[1]), kv[0][3])):
@@ -179,6 +172,17 @@ def build_queue(record: dict, decisions: Decisions) -> Queue:
                  tuple(review.get("not_applied", ())))
 
 
+def _answer(student: dict, part: dict, column: dict, evidence: tuple[str, ...], applied: dict | None,
+            decisions: Decisions) -> Answer:
+    """One student's graded part, with the decision on it that matches its text, or the one that no longer does."""
+    given = cleaned(part.get("given", ""))
+    decision = decisions.decision_for(student["id"], column["number"], part["part"])
+    matching = decision if decision is not None and decision.matches(column["template"], given) else None
+    return Answer(student["id"], student.get("name", ""), given, str(part.get("expected", "")),
+                  float(part.get("points", 0.0)), float(part.get("max_points", 0.0)), part.get("mistake") or "",
+                  str(part.get("message", "")), evidence, matching, decision if matching is None else None, applied)
+
+
 def _kind(status: str | None, answered: int, evidence) -> str | None:
     """Why a part needs a human, if it does: a blank counts where any other part of the sheet was answered."""
     if status == UNREADABLE:
@@ -191,7 +195,8 @@ def _kind(status: str | None, answered: int, evidence) -> str | None:
 
 
 def _flagged(signs) -> dict[tuple[str, str, str], list[str]]:
-    """(student, slot, part) -> the evidence of every sign resting on that answer."""
+    """(student, slot, part) -> the evidence of every sign resting on that answer: each line of a sign's
+    evidence starts with the part it is about, "q1 (a): ..." (graders.copying writes it so)."""
     found: dict[tuple[str, str, str], list[str]] = {}
     for sign in signs:
         lines = {line.split(":", 1)[0]: line for line in sign.get("evidence", ())}
