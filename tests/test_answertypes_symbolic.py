@@ -277,3 +277,15 @@ def test_a_formula_from_the_wrong_method_carries_forward_through_the_solver(vari
     carried = f"{Expression.parse(wrong, SYMBOLS)(**values):.6g}"
     parts = grade_variant(variant, {"a": wrong, "b": carried}).parts
     assert parts[0].mistake == "point_mass_pulley" and parts[1].status == CARRIED
+
+
+def test_the_guides_shorthand_loads_with_the_default_range(tmp_path):
+    """docs/templates.md offers `symbols: [K, M, m]`: each symbol then ranges over the default 0.5 to 5."""
+    text = (FIXTURES / "pulley_frequency.yaml").read_text(encoding="utf-8")
+    text = text.replace("    symbols: {K: [1000, 5000], M: [2, 10], m: [1, 8]}\n", "    symbols: [K, M, m]\n")
+    path = tmp_path / "t.yaml"
+    path.write_text(text, encoding="utf-8")
+    shutil.copy(FIXTURES / "solvers.py", tmp_path)
+    template = load_template(path)
+    part = next(p for p in template.parts if p.type == "symbolic")
+    assert part.options["ranges"] == tuple((name, 0.5, 5.0) for name in ("K", "M", "m"))

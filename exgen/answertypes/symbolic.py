@@ -68,7 +68,7 @@ class Symbolic(AnswerType):
                 continue
             if span is None:
                 span = DEFAULT_RANGE
-            if not (isinstance(span, list) and len(span) == 2 and all(_is_number(x) for x in span)
+            if not (isinstance(span, (list, tuple)) and len(span) == 2 and all(_is_number(x) for x in span)
                     and 0 < span[0] < span[1] and math.isfinite(span[1])):
                 report(("symbols", name), "a range is [low, high] with 0 < low < high: the values compared at")
                 continue
