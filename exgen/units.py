@@ -194,6 +194,21 @@ def _names_an_energy(unit: str) -> bool:
     return any(word in spelled(unit) for word in ENERGY_WORDS)
 
 
+def is_energy_unit(unit: str) -> bool:
+    """Whether a unit of the dimension torque and energy share names an energy (J, kJ, W·s), not a torque (N·m)."""
+    return _names_an_energy(unit)
+
+
+#: Units that are rates by name count cycles: Hz is rev/s, where a bare 1/s says neither radians nor cycles.
+CYCLE_WORDS = ("hertz", "revolution", "cycle", "count", "turn")
+
+
+@lru_cache(maxsize=64)
+def counts_cycles(unit: str) -> bool:
+    """Whether an angle-free rate unit says it counts cycles (Hz, cps), unlike a bare 1/s or s⁻¹."""
+    return any(word in spelled(unit) for word in CYCLE_WORDS)
+
+
 def to_si(value: float, unit: str) -> float:
     return value * unit_info(unit).factor
 

@@ -74,6 +74,9 @@ def _in_unit(text: str, unit: str) -> tuple[units.Reading, float]:
     if reading.unit is None:
         value = reading.value
     else:
+        ambiguous = ambiguous_unit(reading, unit)
+        if ambiguous:
+            raise QuantityError(ambiguous)
         try:
             value = units.convert(reading.value, reading.unit, unit)
         except DimensionError as exc:
@@ -85,6 +88,59 @@ def _in_unit(text: str, unit: str) -> tuple[units.Reading, float]:
     if not math.isfinite(value):
         raise QuantityError(f"{text.strip()!r} is not a finite number")
     return reading, value
+
+
+def ambiguous_unit(reading: units.Reading, asked: str) -> str | None:
+    """Why a unit of the asked dimension cannot be read as the asked quantity without a guess, naming
+    both readings; None when it can. A torque and an energy share N·m = J, but J names an energy and
+    N·m a torque; an angular speed in bare 1/s is radians or revolutions per second (SI's radian is 1,
+    a student's 1/s is as often rev/s): converting either way would mark a right answer wrong or a
+    wrong one right."""
+    try:
+        given, wanted = units.unit_info(reading.unit), units.unit_info(asked)
+    except QuantityError:
+        return None
+    if given.dims != wanted.dims:
+        return None
+    if wanted.kind == "torque or energy":
+        return _energy_or_torque(reading, given, asked, wanted)
+    if wanted.angle > 0 and given.angle == 0 and "[time]^-" in given.dims and not units.counts_cycles(reading.unit):
+        return _radians_or_revolutions(reading, given)
+    return None
+
+
+def _energy_or_torque(reading: units.Reading, given: units.UnitInfo, asked: str, wanted: units.UnitInfo) -> str | None:
+    energy_written, energy_asked = units.is_energy_unit(reading.unit), units.is_energy_unit(asked)
+    if energy_written == energy_asked:
+        return None
+    written, meant = units.pretty_unit(reading.unit), units.pretty_unit(asked)
+    number = _number(reading.value * given.factor / wanted.factor)
+    if energy_written:
+        return f"{written} is an energy unit; a torque is in {meant}: write {number} {meant} if you mean the torque"
+    return f"{written} is a torque unit; an energy is in {meant}: write {number} {meant} if you mean the energy"
+
+
+_PER = {1.0: "s", 60.0: "min"}
+
+
+def _radians_or_revolutions(reading: units.Reading, given: units.UnitInfo) -> str:
+    written = units.pretty_unit(reading.unit)
+    power = -int(given.dims.rsplit("^", 1)[1])
+    per = _PER.get(round(given.factor ** (-1 / power), 9)) if power in (1, 2) else None
+    if per is None:
+        return (f"{written} could be radians or revolutions per unit time: write the unit with rad or rev "
+                f"in it, such as rad/s or rev/s")
+    tail = f"/{per}" + ("^2" if power == 2 else "")
+    rad, rev = units.pretty_unit("rad" + tail), units.pretty_unit("rev" + tail)
+    number = _number(reading.value)
+    return (f"{written} could be {rad} or {rev}: write {number} {rad} if you mean radians per "
+            f"{'second' if per == 's' else 'minute'}{' squared' if power == 2 else ''}, or {number} {rev} "
+            f"if you mean revolutions")
+
+
+def _number(value: float) -> str:
+    """A number as a student would retype it: up to ten figures, no float noise (140.39999999999998)."""
+    return format(value, ".10g")
 
 
 def kind_of(unit: str) -> str:
