@@ -124,8 +124,7 @@ def coupler_angle(ground: float, crank: float, coupler: float, rocker: float, th
     # e^{iθ3} (L3 - L4 e^{±iγ}) = L1 - L2 e^{iθ2}, the vector B -> D
     fallback = complex(l1 - l2 * math.cos(theta2), -l2 * math.sin(theta2)) / \
         complex(l3 - l4 * math.cos(gamma), -sign * l4 * math.sin(gamma))
-    return _half_angle(-l2 * math.sin(theta2) + sign * l4 * math.sin(gamma),
-                       l1 + l3 - l2 * math.cos(theta2) - l4 * math.cos(gamma), fallback)
+    return _half_angle(*_coupler_terms(l1, l2, l3, l4, theta2, gamma, sign), fallback)
 
 
 def rocker_angle(ground: float, crank: float, coupler: float, rocker: float, theta2: float, gamma: float,
@@ -136,8 +135,35 @@ def rocker_angle(ground: float, crank: float, coupler: float, rocker: float, the
     # e^{iθ4} (L4 - L3 e^{∓iγ}) = L2 e^{iθ2} - L1, the vector D -> B
     fallback = complex(l2 * math.cos(theta2) - l1, l2 * math.sin(theta2)) / \
         complex(l4 - l3 * math.cos(gamma), sign * l3 * math.sin(gamma))
-    return _half_angle(l2 * math.sin(theta2) - sign * l3 * math.sin(gamma),
-                       l4 - l1 + l2 * math.cos(theta2) - l3 * math.cos(gamma), fallback)
+    return _half_angle(*_rocker_terms(l1, l2, l3, l4, theta2, gamma, sign), fallback)
+
+
+def _coupler_terms(l1, l2, l3, l4, theta2, gamma, sign) -> tuple[float, float]:
+    """Numerator and denominator of eq 7.5 (7.7)."""
+    return (-l2 * math.sin(theta2) + sign * l4 * math.sin(gamma),
+            l1 + l3 - l2 * math.cos(theta2) - l4 * math.cos(gamma))
+
+
+def _rocker_terms(l1, l2, l3, l4, theta2, gamma, sign) -> tuple[float, float]:
+    """Numerator and denominator of eq 7.6 (7.8)."""
+    return (l2 * math.sin(theta2) - sign * l3 * math.sin(gamma),
+            l4 - l1 + l2 * math.cos(theta2) - l3 * math.cos(gamma))
+
+
+def half_angle_conditioning(ground: float, crank: float, coupler: float, rocker: float, theta2: float,
+                            gamma: float, circuit: int = 1) -> float:
+    """How far the half-angle fractions of eqs 7.5-7.8 are from 0/0, as a fraction of the longest link:
+    the smaller of |(numerator, denominator)| for θ3 and for θ4. Near 0 (a kite or parallelogram
+    linkage with B on the diagonal's far side: L1 = L4, L2 = L3 and γ = θ2) the fraction reads 0/0
+    in the working, and the rounding of four printed figures decides the angle. A denominator that
+    cancels exactly (x/0, a calculator's error) counts as 0 too."""
+    sign = _sign(circuit)
+    lengths = (ground, crank, coupler, rocker, theta2, gamma, sign)
+    longest = max(ground, crank, coupler, rocker)
+    fractions = (_coupler_terms(*lengths), _rocker_terms(*lengths))
+    if any(abs(denominator) < 1e-9 * longest for _, denominator in fractions):
+        return 0.0
+    return min(math.hypot(*terms) for terms in fractions) / longest
 
 
 def can_assemble(ground: float, crank: float, coupler: float, rocker: float, theta2: float) -> bool:

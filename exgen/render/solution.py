@@ -25,7 +25,7 @@ from .formula import Formula, FormulaError, parse, written
 from .targets import MARKDOWN, PLAIN, SIG, number_parts
 from .working import Plan, in_unit, kind, plan, used_in_si, values_of
 
-MAX_SIG = 7
+MAX_SIG = 10
 
 
 @dataclass(frozen=True)

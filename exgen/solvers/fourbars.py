@@ -17,6 +17,10 @@ from .polygons import angle_gap_deg
 #: The transmission angle is kept in this window: nearer a dead point the answers turn on the
 #: last figure of BD, and a real linkage there would jam.
 GAMMA_RANGE_DEG = (25.0, 155.0)
+#: The half-angle fractions of eqs 7.5-7.8 stay this far from 0/0 (a fraction of the longest link): nearer,
+#: the worked line divides differences of printed values that nearly cancel (at 0/0 it cannot be followed
+#: at all), and γ rounded to four figures moves θ3 or θ4 by more than half a degree. About 1 draw in 20.
+HALF_ANGLE_MIN = 0.1
 
 BD_FORMULA = r"\sqrt{@L1^2 + @L2^2 - 2\,@L1\,@L2\cos @phi2}"
 GAMMA_FORMULA = r"\cos^{-1}\frac{@L3^2 + @L4^2 - @BD^2}{2\,@L3\,@L4}"
@@ -75,6 +79,8 @@ def fourbar_position(p, d):
     bd, gamma, theta3, theta4 = position_steps(d, (p.L1, p.L2, p.L3, p.L4), "theta2", circuit)
     other3 = lk.coupler_angle(p.L1, p.L2, p.L3, p.L4, p.theta2, gamma, 3 - circuit)
     require_well_conditioned(d, gamma, math.radians(angle_gap_deg(theta3, other3)))
+    conditioning = lk.half_angle_conditioning(p.L1, p.L2, p.L3, p.L4, p.theta2, gamma, circuit)
+    d.require(conditioning >= HALF_ANGLE_MIN, "the half-angle form of θ3 or θ4 is near 0/0 at this crank angle")
     d.mistake("gamma", "theta4_for_gamma", theta4)
     d.mistake("gamma", "supplement", math.pi - gamma)
     d.mistake("theta4", "gamma_for_theta4", gamma)
