@@ -197,3 +197,43 @@ def test_linkage_working_can_be_followed_at_every_draw(bank):
                 if not answer_type(part).matches(near, value, part):
                     found.append((template.id, seed, "four figures: " + text))
     assert not found, found[:5]
+
+
+# ---- a value shown twice is shown the same -------------------------------------------------------------
+
+SHOWN_SEEDS = range(30)
+
+
+def _number_text(number) -> str:
+    return number.exact if number.exact is not None else PLAIN.number(number.value, number.sig)
+
+
+def test_a_value_is_substituted_as_it_was_shown(bank):
+    """Every number a worked line substitutes for a value an earlier line (or the givens) showed is
+    printed as it was shown there, to the same figures: no 12.72 m/s then 12.723², no 1352 N then
+    1351.5. Every template, 30 draws each."""
+    found = []
+    for template in bank:
+        for seed in SHOWN_SEEDS:
+            variant = make_variant(template, seed)
+            worked = solution(variant)
+            shown: dict[str, list[tuple[float, str]]] = {}
+            for given in worked.given:
+                param = next(p for p in variant.params if p.name == given.name)
+                if given.si_text and isinstance(param.si, (int, float)):
+                    shown.setdefault(given.name, []).append((float(param.si), given.si_text.split(" ")[0]))
+            for line in worked.lines:
+                if line.substituted is not None:
+                    for slot, fill in zip(line.substituted.formula.slots, line.substituted.fills):
+                        if not isinstance(fill, Number) or fill.exact is not None:
+                            continue
+                        for value, text in shown.get(slot.name, ()):
+                            if math.isclose(value, fill.value, rel_tol=1e-9, abs_tol=1e-300) \
+                                    and text.lstrip("−-") != _number_text(fill).lstrip("−-"):
+                                found.append((template.id, seed, slot.name, text, _number_text(fill),
+                                              " = ".join(line.chain(PLAIN))))
+                for quantity in line.values:
+                    if isinstance(quantity.value, float):
+                        shown.setdefault(line.name, []).append(
+                            (quantity.value, PLAIN.number(quantity.value, getattr(quantity, "sig", SIG))))
+    assert not found, (len(found), found[:6])

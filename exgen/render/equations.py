@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .targets import PLAIN
+from .targets import PLAIN, SIG
 from .widths import term_width, text_width
 
 #: Width of an equation row beside the part column, in em of the body font.
@@ -70,7 +70,7 @@ def rows(line, target) -> list[list[str]]:
     written, sizes = [[target.math(line.symbol)]], [[term_width(line.symbol)]]
     for piece in line.pieces:
         sized = target.sized_terms(piece) if hasattr(piece, "formula") else \
-            [(t, text_width(PLAIN.quantity(piece.value, piece.unit))) for t in target.terms(piece)]
+            [(t, text_width(PLAIN.quantity(piece.value, piece.unit, getattr(piece, "sig", SIG)))) for t in target.terms(piece)]
         written.append([t for t, _ in sized])
         sizes.append([w for _, w in sized])
     return [[("= " if seg.start and seg.piece else "") + " ".join(written[seg.piece][seg.lo:seg.hi]) for seg in row]

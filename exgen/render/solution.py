@@ -56,6 +56,7 @@ class Filled:
 class Quantity:
     value: Any
     unit: str
+    sig: int = SIG   # figures: four, or as many as a later line substitutes it with
 
 
 @dataclass(frozen=True)
@@ -145,6 +146,17 @@ def _solution(variant) -> Solution:
             _check_names(variant, formula, values)
             plans[step.name] = (formula, plan(formula, values[step.name], values))
     in_si = used_in_si(plans, values)
+    figures: dict[tuple[str, str], int] = {}
+    for _ in range(MAX_SIG - SIG + 1):  # the figures only grow, and stop at MAX_SIG
+        blocks = _blocks(variant, values, plans, in_si, figures)
+        grown = _figures_used(blocks, plans)
+        if grown == figures:
+            break
+        figures = grown
+    return Solution(given_lines(variant, in_si, figures), tuple(blocks))
+
+
+def _blocks(variant, values, plans, in_si, figures) -> list:
     hidden = set().union(*(i.hides for i in variant.inserts if isinstance(i, Table))) if variant.inserts else set()
     answered = _answered(variant)
     blocks, inserts = [], sorted(variant.inserts, key=lambda i: i.at)
@@ -153,9 +165,23 @@ def _solution(variant) -> Solution:
             blocks.append(_insert(inserts.pop(0), values))
         if step.name in hidden and step.name not in answered:
             continue
-        blocks.append(_line(variant, step, values, plans.get(step.name), in_si, answered))
+        blocks.append(_line(variant, step, values, plans.get(step.name), in_si, answered, figures))
     blocks += [_insert(i, values) for i in inserts]
-    return Solution(given_lines(variant, in_si), tuple(blocks))
+    return blocks
+
+
+def _figures_used(blocks, plans) -> dict[tuple[str, str], int]:
+    """(value, unit) -> the most figures any line substitutes it with, where that is more than four: a value
+    shown on its own line (or among the givens) is then shown to as many, and every line substitutes it so,
+    so a number a reader meets twice is written the same both times."""
+    out: dict[tuple[str, str], int] = {}
+    for line in blocks:
+        if not isinstance(line, WorkLine) or line.substituted is None:
+            continue
+        for slot, unit, fill in zip(line.substituted.formula.slots, plans[line.name][1].units, line.substituted.fills):
+            if isinstance(fill, Number) and fill.exact is None and fill.sig > SIG:
+                out[slot.name, unit] = max(out.get((slot.name, unit), SIG), fill.sig)
+    return out
 
 
 def _parse(variant, latex: str) -> Formula:
@@ -180,7 +206,7 @@ def _answered(variant) -> dict[str, list[str]]:
     return answered
 
 
-def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
+def given_lines(variant, in_si=frozenset(), figures=None) -> tuple[GivenLine, ...]:
     """The givens this variant uses, in the template's order (a second idler's teeth only with two idlers)."""
     out, unused = [], variant.unused
     for p in variant.params:
@@ -189,12 +215,12 @@ def given_lines(variant, in_si=frozenset()) -> tuple[GivenLine, ...]:
         si_text = None
         target = units.si_unit(p.unit) if p.unit else None
         if p.name in in_si and isinstance(p.si, (int, float)) and target is not None:
-            si_text = PLAIN.quantity(float(p.si), target)
+            si_text = PLAIN.quantity(float(p.si), target, (figures or {}).get((p.name, target), SIG))
         out.append(GivenLine(p.name, p.label, p.symbol or default_symbol(p.name), str(p), si_text))
     return tuple(out)
 
 
-def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
+def _line(variant, step, values, planned, in_si, answered, figures) -> WorkLine:
     me = values[step.name]
     formula = substituted = None
     first_unit = me.shown
@@ -207,8 +233,12 @@ def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
         if step.symbolic and not _restates(parsed, symbols, step.symbol):
             formula = Filled(parsed, symbols)
         if parsed.slots and not _restates_value(parsed, values):
-            substituted = _substituted(parsed, plan, values, step, first_unit)
-    shown = [Quantity(in_unit(step.value, step.unit, first_unit), first_unit)]
+            substituted = _substituted(parsed, plan, values, step, first_unit, figures)
+
+    def quantity(unit: str) -> Quantity:
+        return Quantity(in_unit(step.value, step.unit, unit), unit, figures.get((step.name, unit), SIG))
+
+    shown = [quantity(first_unit)]
     extra = [me.shown, me.si] if step.name in in_si or first_unit != me.shown else []
     for part_id in answered.get(step.name, ()):
         answer = variant.answers[part_id]
@@ -216,7 +246,7 @@ def _line(variant, step, values, planned, in_si, answered) -> WorkLine:
     for unit in extra:
         if isinstance(step.value, (int, float)) and not isinstance(step.value, bool) and unit and \
                 unit not in (q.unit for q in shown) and units.same_dimension(unit, step.unit or ""):
-            shown.append(Quantity(in_unit(step.value, step.unit, unit), unit))
+            shown.append(quantity(unit))
     if substituted is None and formula is not None and not formula.formula.slots:
         formula = formula if _latex_of(formula) != MARKDOWN.number(step.value) else None
     return WorkLine(step.name, step.symbol, formula, substituted, tuple(shown), step.note,
@@ -244,8 +274,9 @@ def _latex_of(filled: Filled) -> str:
     return filled.latex(lambda n: MARKDOWN.number(n.value))
 
 
-def _substituted(formula: Formula, plan: Plan, values, step, first_unit: str) -> Filled:
-    """The formula with numbers, to as many figures as it takes to reproduce the line's value."""
+def _substituted(formula: Formula, plan: Plan, values, step, first_unit: str, figures) -> Filled:
+    """The formula with numbers, to as many figures as it takes to reproduce the line's value as shown,
+    and each number to at least the figures it is shown with elsewhere (`figures`)."""
     def numbers(sig):
         out = []
         for slot, unit in zip(formula.slots, plan.units):
@@ -253,20 +284,22 @@ def _substituted(formula: Formula, plan: Plan, values, step, first_unit: str) ->
             if v.exact is not None and unit == v.shown:
                 out.append(Number(float(v.exact), SIG, unit == "deg", v.exact))
             else:
-                out.append(Number(in_unit(v.value, v.si, unit), sig, unit == "deg"))
+                out.append(Number(in_unit(v.value, v.si, unit), max(sig, figures.get((slot.name, unit), SIG)),
+                                  unit == "deg"))
         return tuple(out)
 
     if not isinstance(step.value, float):
         return Filled(formula, numbers(SIG), True)
     angle = kind(step.unit) == "angle"
     expected = in_unit(step.value, step.unit, first_unit)
+    own = figures.get((step.name, first_unit), SIG)
     for sig in range(SIG, MAX_SIG + 1):
         fills = numbers(sig)
         got = line_value(Filled(formula, fills, True))
         if got is None:
             return Filled(formula, numbers(SIG), True)
         turn = in_unit(2 * math.pi, "rad", first_unit) if angle else 0.0
-        if reproduces(in_unit(got, "rad", first_unit) if angle else got, expected, turn=turn):
+        if reproduces(in_unit(got, "rad", first_unit) if angle else got, expected, sig=own, turn=turn):
             return Filled(formula, fills, True)
     return Filled(formula, numbers(SIG), True)
 

@@ -54,7 +54,7 @@ def _pieces(target, piece) -> list[str]:
         return [target.math(piece)]
     if hasattr(piece, "formula"):
         return target.formula_terms(piece)
-    return [target.quantity(piece.value, piece.unit)]
+    return [target.quantity(piece.value, piece.unit, getattr(piece, "sig", SIG))]
 
 
 def _latex_slot(target, number) -> str:
