@@ -10,6 +10,7 @@ from exgen.issue.assignment import Assignment, QuestionSpec, Student, build_shee
 from exgen.render.markdown import key_markdown, sheet_markdown
 from exgen.render.mathtext import text_to_markdown
 from exgen.render.targets import MARKDOWN
+from exgen.render.unicode_math import typeset_minus
 from exgen.solve.variant import make_variant
 
 SECRET = b"x" * 32
@@ -56,7 +57,7 @@ def test_every_statement_ask_and_figure(sheet, figures, student_md):
         assert text_to_markdown(v.statement) in student_md
         for p in v.params:
             if f"{{{{ {p.name} }}}}" in v.template.statement:
-                assert str(p) in student_md
+                assert typeset_minus(str(p)) in student_md  # a negative given with the minus sign
         for part in v.template.parts:
             assert f"**({part.id})** {text_to_markdown(v.asks[part.id])}" in student_md
         if figures[q.slot].sheet:
@@ -91,7 +92,7 @@ def test_key_holds_answers_given_data_and_working(sheet, key_md):
         for answer in q.variant.answers.values():
             assert f"**{answer_type(answer.part).key_text(answer, MARKDOWN)}**" in key_md  # a formula prints as math
         for p in q.variant.params:
-            assert (f"| ${p.symbol}$ | {p}" in key_md) == (p.name not in q.variant.unused)
+            assert (f"| ${p.symbol}$ | {typeset_minus(str(p))}" in key_md) == (p.name not in q.variant.unused)
     assert key_md.count("### Worked solution") == len(sheet.questions)
 
 

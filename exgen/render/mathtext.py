@@ -11,7 +11,7 @@ import re
 from functools import lru_cache
 
 from ..errors import ExgenError
-from .unicode_math import split_math, unescape_dollars
+from .unicode_math import NEGATIVE_NUMBER, split_math, typeset_minus, unescape_dollars
 
 
 _TYPST_ALWAYS = set("\\#*_$`<>@[]~")
@@ -60,7 +60,7 @@ def escape_typst(prose: str) -> str:
 
 #: A hyphen before a digit that follows no word, number or closing bracket is a negative sign: Typst sets
 #: it as a minus after a space but not after "(" or "[", so "(-100 mm, -190 mm)" mixed the two.
-_NEGATIVE_NUMBER = re.compile(r"(?<![\w.)\]\-\u2080-\u2089\u2070-\u2079])-(?=\d)")
+_NEGATIVE_NUMBER = NEGATIVE_NUMBER
 _APOSTROPHE_AFTER_DIGIT = re.compile(r"(?<=\d)'(?=[A-Za-z])")
 _PRIME_AFTER_DIGIT = re.compile("(?<=[0-9\u2080-\u2089])'")
 #: A word with a middle dot in it, a unit such as N·m or kg·m²: the body font's dot stands spaced
@@ -80,7 +80,7 @@ def _tight_unit(match: re.Match) -> str:
 @lru_cache(maxsize=16384)
 def escape_markdown(prose: str) -> str:
     """Plain text -> Markdown that shows exactly that text (no emphasis, links, lists or math)."""
-    text = prose.translate(_MD_ESCAPES)
+    text = typeset_minus(prose).translate(_MD_ESCAPES)
     return _MD_LINE_START.sub(lambda m: m.group(1) + _escape_marker(m.group(2)), text)
 
 

@@ -12,7 +12,7 @@ from functools import lru_cache
 from .. import units
 from .formula import terms, written
 from .mathtext import escape_markdown, escape_typst, latex_to_typst, text_to_markdown, text_to_typst
-from .unicode_math import latex_to_unicode, text_to_plain
+from .unicode_math import latex_to_unicode, text_to_plain, typeset_minus
 from .widths import number_width, term_width
 
 SIG = 4
@@ -233,6 +233,7 @@ class Plain:
         if not _is_number(value):
             return self.math(_latex_of(value)) if _latex_of(value) else str(value)
         mantissa, exponent = number_parts(value, sig)
+        mantissa = typeset_minus(mantissa)
         return f"{mantissa}×10{exponent.translate(_SUPERSCRIPT)}" if exponent else mantissa
 
     def quantity(self, value, unit: str, sig: int = SIG) -> str:
@@ -246,7 +247,7 @@ class Plain:
         return text_to_plain(text)
 
     def prose(self, text: str) -> str:
-        return text
+        return typeset_minus(text)
 
     DEGREE = r"^{\circ}"
 

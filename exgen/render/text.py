@@ -47,7 +47,7 @@ def key_lines(variant, worked=None) -> list[str]:
     for g in worked.given:
         si = f" = {g.si_text}" if g.si_text else ""
         label = f"  ({PLAIN.text(g.label)})" if g.label else ""
-        out.append(f"  {PLAIN.math(g.symbol)} = {g.printed}{si}{label}")
+        out.append(f"  {PLAIN.math(g.symbol)} = {PLAIN.prose(g.printed)}{si}{label}")
     out += ["", "Worked solution"] if out else ["Worked solution"]
     for block in worked.blocks:
         if isinstance(block, TableBlock):

@@ -323,9 +323,19 @@ def unescape_dollars(prose: str) -> str:
     return prose.replace("\\$", "$")
 
 
+#: A hyphen before a digit that follows no word, number or closing bracket is a negative sign, set as the
+#: minus sign U+2212 in typeset text, so "-1512" never stands beside "(−1512.5)".
+NEGATIVE_NUMBER = re.compile(r"(?<![\w.)\]\-\u2080-\u2089\u2070-\u2079])-(?=\.?\d)")
+
+
+def typeset_minus(text: str) -> str:
+    """Every negative sign of a number in `text` as U+2212 ("x = -3" -> "x = −3"; "x-1", "2-3" kept)."""
+    return NEGATIVE_NUMBER.sub("\u2212", text) if "-" in text else text
+
+
 def text_to_plain(text: str) -> str:
-    """A statement or ask for the terminal: math spans as Unicode."""
+    """A statement or ask for the terminal: math spans as Unicode, negative numbers with the minus sign."""
     if "$" not in text:  # no math and no escaped dollar: most messages and asks
-        return text
-    return "".join(latex_to_unicode(chunk) if is_math else unescape_dollars(chunk)
+        return typeset_minus(text)
+    return "".join(latex_to_unicode(chunk) if is_math else typeset_minus(unescape_dollars(chunk))
                    for is_math, chunk in split_math(text))
