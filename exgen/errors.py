@@ -66,9 +66,24 @@ class SolverFailure(ExgenError, RuntimeError):
         of = f"{template_id}, seed {seed}" if seed is not None else template_id
         at = f" at {where}" if where else ""
         if given:
-            super().__init__(f"{of}: the solver cannot work from {given}: {self.reason}{at}")
+            super().__init__(f"{of}: the solver cannot work from {given}: {self.plain}" if self._worded else
+                             f"{of}: the solver cannot work from {given}: {self.reason}{at}")
         else:
             super().__init__(f"{of}: the solver failed with {self.reason}{at}")
+
+
+    @property
+    def _worded(self) -> bool:
+        """Whether the error says in words what is wrong (the physics refusing a value), not Python's terms."""
+        return isinstance(self.error, ValueError) and str(self.error) not in ("", "math domain error") \
+            and type(self.error) is ValueError
+
+    @property
+    def plain(self) -> str:
+        """What went wrong, for someone who gave the values: the physics' own words where it has them."""
+        return str(self.error) if self._worded else "the working reaches an impossible step: " + (
+            "a square root or inverse sine of a value out of its range" if "math domain" in str(self.error)
+            else self.reason)
 
 
 class DrawError(ExgenError, RuntimeError):

@@ -36,8 +36,8 @@ FIGURE_GIVEN = "The figure is the problem's data; open it to answer"
 OPEN_SUGGESTED = "(Figures are kept beside your progress file; `exgen practice --open` opens each in your viewer.)"
 FIGURE_UNWRITTEN = "The figure could not be written to {path} ({reason}); the web pages (`exgen serve`) show it."
 SOLUTION_SHOWN = "(Parts answered from now on are checked, but count for nothing in your progress.)"
-VERDICTS = {CORRECT: "Right.", CARRIED: "Right, from your earlier answer:", WRONG: "Not right:",
-            UNREADABLE: "Cannot read that:"}
+#: An unreadable answer has no lead: its message says what could not be read, and that it is a format problem.
+VERDICTS = {CORRECT: "Right.", CARRIED: "Right, from your earlier answer:", WRONG: "Not right:"}
 NEXT, QUIT = "next", "quit"
 
 
@@ -173,8 +173,8 @@ class Terminal:
         if result.status == CORRECT:
             self.say(f"  {VERDICTS[CORRECT]}")
             return
-        lead = VERDICTS.get(result.status, "")
-        self.tell(f"{lead} {PLAIN.text(result.message)}".strip())
+        lead, message = VERDICTS.get(result.status, ""), PLAIN.text(result.message)
+        self.tell(f"{lead} {message}" if lead else message[:1].upper() + message[1:])
 
     def hint(self, problem: Problem, part_id: str) -> None:
         given = self.practice.next_hint(problem, part_id)

@@ -35,7 +35,7 @@ def test_untouched_form_reads_as_all_blank(bank, tmp_path):
 def test_form_lines_give_ask_and_unit(bank):
     form = answer_form(sheet_for(bank))
     assert '    a: ""   # angle of contact on the smaller pulley [deg]' in form
-    assert "[kW]" in form and "[N*m]" in form
+    assert "[kW]" in form and "[N·m]" in form
     assert "a bare number is read in the unit" in form.lower()
     assert "slot,part,answer" in form  # the CSV alternative is documented
 

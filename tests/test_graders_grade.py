@@ -302,7 +302,7 @@ def test_choice_part(bank, typed, status):
         if expected == WRONG:
             assert part.mistake == "opposite" and typed.lower() == wrong
     else:
-        assert part.status == status and "increase, decrease" in part.message
+        assert part.status == status and "\"increase\" or \"decrease\"" in part.message
 
 
 # ---- the sheet as a whole ----------------------------------------------------------------------

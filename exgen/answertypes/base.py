@@ -126,8 +126,9 @@ class AnswerType:
         return f"answer in {asked_unit(part)}" if part.unit else "a pure number"
 
     def form_hint(self, part: PartSpec) -> str:
-        """At the end of the part's line in the answer file, in [brackets]."""
-        return part.unit or "pure number"
+        """At the end of the part's line in the answer file, in [brackets]: the unit as the question prints it
+        (N·m, not N*m), degrees as deg."""
+        return asked_unit(part) or "pure number"
 
     def form_note(self) -> str:
         """Lines for the answer file's header when the sheet has parts of this type ("" for none)."""

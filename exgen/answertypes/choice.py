@@ -86,7 +86,9 @@ class Choice(AnswerType):
         return part.options.get("choices", ("",))[0]
 
     def format_hint(self, part: PartSpec) -> str:
-        return "write one of " + ", ".join(part.options.get("choices", ()))
+        """'write "raises the bow" or "lowers the bow"': each choice quoted, since a choice may be words."""
+        quoted = [f'"{c}"' for c in part.options.get("choices", ())]
+        return "write " + (", ".join(quoted[:-1]) + " or " + quoted[-1] if len(quoted) > 1 else "".join(quoted))
 
     def matches(self, given, expected, part: PartSpec, widen: float = 1.0) -> bool:
         return choice(str(given), str(expected), choice_aliases())

@@ -43,7 +43,7 @@ class Integer(AnswerType):
         return "a whole number" + (f", in {asked_unit(part)}" if part.unit else "")
 
     def form_hint(self, part: PartSpec) -> str:
-        return f"whole number{' of ' + part.unit if part.unit else ''}"
+        return f"whole number{' of ' + asked_unit(part) if part.unit else ''}"
 
     def read(self, text: str, part: PartSpec) -> Given:
         refuse_long(text)

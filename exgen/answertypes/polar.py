@@ -126,7 +126,7 @@ class PolarType(AnswerType):
         return f"{asked_unit(part) or 'magnitude'} at an angle in degrees"
 
     def form_hint(self, part: PartSpec) -> str:
-        return f"{part.unit or 'size'} at deg, e.g. 1.5 {part.unit} at 218 deg"
+        return f"{asked_unit(part) or 'size'} at deg, e.g. 1.5 {asked_unit(part)} at 218 deg"
 
     def tolerance_text(self, part: PartSpec) -> str:
         return f"{100 * part.tol.rel:g} % in size and {exact_quantity(part.tol.abs, 'deg')} in angle"

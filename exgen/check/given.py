@@ -9,7 +9,7 @@ from decimal import Decimal
 
 from .. import units
 from ..draw.values import derived_value, failed_requirement, si_values
-from ..errors import ExgenError, QuantityError
+from ..errors import ExgenError, QuantityError, SolverFailure
 from ..load.domains import PERCENT_UNITS, domain_of, drawn_values
 from ..load.template import Template
 from ..render.unicode_math import text_to_plain
@@ -115,5 +115,11 @@ def solve(template: Template, given: dict[str, str]) -> tuple[Variant, list[str]
     broken = failed_requirement(template, si_values(template, values))
     warnings = percent_warnings(template, given, values)
     warnings += [f"these values break the template's drawing constraint {broken!r}"] if broken else []
-    variant = build_variant(template, values, check=False)
+    try:
+        variant = build_variant(template, values, check=False)
+    except SolverFailure as exc:
+        if not broken:
+            raise
+        raise ExgenError(f"{template.id}: these values break the template's constraint {broken!r}, and the solver "
+                         f"cannot work from them ({exc.plain})") from None
     return variant, warnings + list(variant.warnings)

@@ -10,7 +10,6 @@ from pathlib import Path
 
 from ..errors import ExgenError
 
-CLOSE_MISTAKE = "lands within"  # exgen.solve.variant.mistakes_apart's warning, for values a user gave
 CLOSE_MISTAKE_MEANS = ("a mistake that close is marked right: for these values the grader cannot tell it from "
                        "the answer; sheets never draw such values")
 EXPORT_SUFFIX = {"moodle": ".xml", "qti": ".zip", "canvas": ".zip"}
@@ -130,7 +129,9 @@ def cmd_solve(args) -> int:
 
     template = _bank(args).get(args.id)
     variant, warnings = solve(template, parse_settings(args.set))
-    close = [w for w in warnings if CLOSE_MISTAKE in w]
+    from ..solve.variant import MISTAKE_CLOSE, MISTAKE_IS_ANSWER
+
+    close = [w for w in warnings if MISTAKE_CLOSE in w or MISTAKE_IS_ANSWER in w]
     for warning in warnings:
         print(f"warning: {warning}", file=sys.stderr)
         if close and warning is close[-1]:

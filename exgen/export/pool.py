@@ -184,8 +184,13 @@ def solution_html(variant: Variant, target, key_figures: list[tuple[str, str]]) 
     """The worked solution as the general feedback of an item: the given data, the working and the answers."""
     context = key_context(variant, target, key_figures)
     answers = [{"id": p.id, "answer": answer_type(p).key_text(variant.answers[p.id], target),
-                "tolerance": target.prose(answer_type(p).tolerance_text(p))} for p in variant.template.parts]
+                "tolerance": _within(answer_type(p).tolerance_text(p), target)} for p in variant.template.parts]
     return Markup(render("solution.html.j2", q=context, answers=answers, target=target).strip())
+
+
+def _within(tolerance: str, target) -> str:
+    """The tolerance an answer is right within; none for a choice or a whole number, right only when exact."""
+    return "" if tolerance == "exact" else target.prose(tolerance)
 
 
 def notices(pool: Pool) -> list[str]:

@@ -21,11 +21,16 @@ def driven_diameter(d1: float, speed_ratio_wanted: float, thickness: float = 0.0
 
 def alpha_open(r1: float, r2: float, centre_distance: float) -> float:
     """Half the wrap lost (or gained) on an open drive: asin(|r1 - r2| / X) (eq. 1.9)."""
+    if abs(r1 - r2) > centre_distance:
+        raise ValueError("the belt cannot run between the pulleys: the difference of their radii is more "
+                         "than the centre distance")
     return math.asin(abs(r1 - r2) / centre_distance)
 
 
 def alpha_crossed(r1: float, r2: float, centre_distance: float) -> float:
     """asin((r1 + r2) / X) for a crossed drive (eq. 1.11)."""
+    if r1 + r2 > centre_distance:
+        raise ValueError("the pulleys overlap: the sum of their radii is more than the centre distance")
     return math.asin((r1 + r2) / centre_distance)
 
 

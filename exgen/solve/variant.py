@@ -20,6 +20,10 @@ from ..load.template import PartSpec, Template, default_symbol
 from ..load.text import render_text
 from .derivation import PLACEHOLDER, Derivation, Params, Step
 
+#: How a warning for values a user gave says a named mistake would be marked right (exgen solve explains it).
+MISTAKE_CLOSE = "lands within"
+MISTAKE_IS_ANSWER = "gives the answer itself"
+
 MAX_TRIES = 1000
 
 
@@ -212,8 +216,10 @@ def mistakes_apart(part: PartSpec, answer, derivation: Derivation, check: bool =
         if kind.apart(wrong, answer, part):
             kept[name] = wrong
         elif name in named and not any((s, name) in derivation.if_apart for s in steps):
-            reason = (f"part {part.id}: the mistake {name!r} lands within {MISTAKE_GAP:g} times "
-                      f"{kind.tolerance_text(part)} of the answer")
+            tolerance = kind.tolerance_text(part)
+            reason = (f"part {part.id}: the mistake {name!r} {MISTAKE_IS_ANSWER}" if tolerance == "exact" else
+                      f"part {part.id}: the mistake {name!r} {MISTAKE_CLOSE} {MISTAKE_GAP:g} times the part's "
+                      f"tolerance ({tolerance}) of the answer")
             if check:
                 raise InvalidDraw(reason)
             derivation.warnings.append(reason)
