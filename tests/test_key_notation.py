@@ -21,3 +21,19 @@ def test_plain_keys_write_every_negative_number_with_the_minus_sign(bank):
                 if HYPHEN_SIGN.search(line):
                     found.append((template.id, seed, line.strip()))
     assert not found, (len(found), found[:6])
+
+
+def test_a_slider_crank_s_figure_says_where_the_slider_is_in_english(bank):
+    """'the slider below of the crank pivot' in the figure's description (the key's and QTI's alt text)."""
+    from exgen.figures import figure_svg
+
+    template = bank.get("linkages.slider_crank")
+    seen = {}
+    for seed in range(200):
+        variant = make_variant(template, seed)
+        svg = figure_svg(variant)
+        title = re.search(r"<title[^>]*>([^<]*)</title>", svg) or re.search(r'aria-label="([^"]*)"', svg)
+        text = title.group(1) if title else svg
+        seen[re.search(r"slider (to the right of|to the left of|below|above|\w+ of)", text).group(1)] = text
+        assert not re.search(r"\b(below|above) of\b", text), text
+    assert {"to the right of", "to the left of", "below", "above"} <= set(seen), seen

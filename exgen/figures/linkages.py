@@ -16,6 +16,9 @@ from .kinematic import DASH, Sketch, centre_of, fit
 from .linkage_poses import joints, pose
 from .svg import NOTE_SIZE, unit
 
+#: Where the slider is, as a caption says it: "to the right of" the pivot, but "below" it (never "below of").
+SLIDER_PLACE = {"right": "to the right of", "left": "to the left of", "below": "below", "above": "above"}
+
 SUBSCRIPT = dict(zip("1234", "₁₂₃₄"))
 
 
@@ -256,7 +259,7 @@ def slider_crank(variant) -> str:
     s.link_label(page["C"], page["P"], f"{_text(variant, 'tip')}", middle)
     angle_label()
     kind = "In-line" if offset == 0 else "Offset"
-    return s.svg(f"{kind} slider-crank, the slider {where} of the crank pivot")
+    return s.svg(f"{kind} slider-crank, the slider {SLIDER_PLACE.get(where, where)} the crank pivot")
 
 
 def _rocker_figure(variant, key: bool) -> str:
