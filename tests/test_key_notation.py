@@ -37,3 +37,39 @@ def test_a_slider_crank_s_figure_says_where_the_slider_is_in_english(bank):
         seen[re.search(r"slider (to the right of|to the left of|below|above|\w+ of)", text).group(1)] = text
         assert not re.search(r"\b(below|above) of\b", text), text
     assert {"to the right of", "to the left of", "below", "above"} <= set(seen), seen
+
+
+def test_a_symbol_that_is_a_fraction_is_bracketed_as_a_factor(bank):
+    """'v₂ = vv₂/v₁' read as v times v₂ over v₁: a step whose symbol is a ratio stands in brackets beside
+    another factor, v(v₂/v₁), in every key's formulas."""
+    from exgen.render.solution import solution
+    from exgen.render.targets import PLAIN
+    from exgen.render.unicode_math import latex_to_unicode
+
+    found, seen = [], 0
+    for template in bank:
+        for seed in range(2):
+            variant = make_variant(template, seed)
+            for line in solution(variant).lines:
+                if line.formula is None:
+                    continue
+                text = " ".join(PLAIN.terms(line.formula))
+                for symbol in line.formula.fills:
+                    if isinstance(symbol, str) and symbol.startswith(r"\frac") and len(line.formula.fills) > 1:
+                        seen += 1
+                        plain = latex_to_unicode(symbol)
+                        if re.search(rf"(?<![(|\s=+−-]){re.escape(plain)}|{re.escape(plain)}(?![)|\s=+−-]|$)", text):
+                            found.append((template.id, text))
+    assert seen and not found, found[:5]
+
+
+def test_a_double_prime_is_one_symbol_in_the_pdf(bank):
+    """P'' was set as "P ′ ′" (Typst math P^(' ')): every step symbol with primes is written with Typst's
+    own primes, before any subscript."""
+    from exgen.render.mathtext import latex_to_typst
+
+    symbols = {s.symbol for t in bank for s in make_variant(t, 1).steps if s.symbol and "''" in s.symbol}
+    assert symbols
+    for symbol in symbols | {"T_2''", "P'''"}:
+        typst = latex_to_typst(symbol)
+        assert not re.search(r"'\s+'", typst) and "^(" not in typst, (symbol, typst)

@@ -339,6 +339,9 @@ def _write(node, fill, numbers, slots) -> str:
         out = []
         for i, item in enumerate(node.items):
             text = _write(item, fill, numbers, slots)
+            if not numbers and _is_slot(item) and not isinstance(item, Script) and text.lstrip().startswith("\\frac") \
+                    and (_factor(_next(node.items, i, -1)) or _factor(_next(node.items, i, 1))):
+                text = f"\\left({text.strip()}\\right)"  # v (v₂/v₁), not v v₂/v₁: a ratio's symbol as a factor
             if numbers and item == _THIN and (_is_slot(_next(node.items, i, -1)) or
                                                         _is_slot(_next(node.items, i, 1))):
                 text = " \\times "
@@ -380,6 +383,13 @@ def _next(items, i, step):
     while 0 <= j < len(items) and items[j] == SPACE:
         j += step
     return items[j] if 0 <= j < len(items) else None
+
+
+def _factor(item) -> bool:
+    """Whether a neighbour multiplies what stands beside it (a symbol, a bracket, a number), not an operator."""
+    if item is None or item == _THIN:
+        return item == _THIN
+    return not (isinstance(item, Tok) and item.kind != "slot" and item.text.strip() in ("+", "-", "=", "/", ""))
 
 
 def _is_slot(item) -> bool:

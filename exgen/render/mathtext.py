@@ -38,9 +38,15 @@ def latex_to_typst(latex: str) -> str:
     import tex2typst  # only for Typst output: the terminal and Markdown never load it
 
     try:
-        return tex2typst.tex2typst(latex)
+        typst = tex2typst.tex2typst(latex)
     except ValueError as exc:
         raise MathError(latex, str(exc).splitlines()[0]) from None
+    # P'' comes back as P^(' '), which Typst sets as two spaced apostrophes ("P ′ ′"); Typst's own P'' is P″
+    # (T_2'' as T_2^(' '): the primes go before the subscript, as tex2typst writes T_2' as T'_2)
+    return _SPACED_PRIMES.sub(lambda m: "'" * m.group(2).count("'") + (m.group(1) or ""), typst)
+
+
+_SPACED_PRIMES = re.compile(r"(_\w+|_\([^()]*\))?\^\((\s*'(?:\s*')+\s*)\)")
 
 
 @lru_cache(maxsize=16384)
