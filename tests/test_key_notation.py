@@ -73,3 +73,15 @@ def test_a_double_prime_is_one_symbol_in_the_pdf(bank):
     for symbol in symbols | {"T_2''", "P'''"}:
         typst = latex_to_typst(symbol)
         assert not re.search(r"'\s+'", typst) and "^(" not in typst, (symbol, typst)
+
+
+def test_a_one_letter_subscript_never_runs_into_the_next_symbol(bank):
+    """'m_Bb²' read as m with subscript Bb: a subscript without a Unicode form is bracketed when a symbol
+    follows it directly (m_(B)b²), in every plain key."""
+    found = []
+    for template in bank:
+        for seed in SEEDS[:3]:
+            for line in variant_text(make_variant(template, seed), key=True).splitlines()[1:]:  # not the id
+                if re.search(r"(?<![\w.])[^\W\d_]_[A-Za-z0-9](?=[A-Za-z0-9\u0370-\u03ff])", line):
+                    found.append((template.id, seed, line.strip()))
+    assert not found, (len(found), found[:5])
