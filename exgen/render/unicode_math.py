@@ -299,7 +299,8 @@ def _script(text: str, table: dict, mark: str) -> str:
     return f"{mark}{text}" if len(text) == 1 else f"{mark}({text})"
 
 
-#: A one-letter script with no Unicode form, run into the symbol after it: m_Bb² is m_(B)b², not m_(Bb)².
+#: A one-letter script with no Unicode form, run into the symbol after it, is set off by a space: m_B b², not
+#: m_Bb² (m with the subscript Bb); a bracket would read as a part's label (F_(c)h).
 _RUN_IN_SCRIPT = re.compile(r"(?<=[_^])([A-Za-z0-9])(?=[A-Za-z0-9\u0370-\u03ff(√])")
 
 
@@ -307,7 +308,7 @@ _RUN_IN_SCRIPT = re.compile(r"(?<=[_^])([A-Za-z0-9])(?=[A-Za-z0-9\u0370-\u03ff(�
 def latex_to_unicode(latex: str) -> str:
     text = _Parser(_tokens(latex)).sequence()
     text = re.sub(r" {2,}", " ", text).strip()
-    text = _RUN_IN_SCRIPT.sub(r"(\1)", text)
+    text = _RUN_IN_SCRIPT.sub(r"\1 ", text)
     return unicodedata.normalize("NFC", text.replace("( ", "(").replace(" )", ")"))  # x and a dot: ẋ
 
 
