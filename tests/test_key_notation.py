@@ -85,3 +85,19 @@ def test_a_one_letter_subscript_never_runs_into_the_next_symbol(bank):
                 if re.search(r"(?<![\w.])[^\W\d_]_[A-Za-z0-9](?=[A-Za-z0-9\u0370-\u03ff])", line):
                     found.append((template.id, seed, line.strip()))
     assert not found, (len(found), found[:5])
+
+
+def test_no_label_in_the_working_reads_as_a_part(bank):
+    """The epicyclic table's rows were (a), (b), (c) beside the parts (a)-(d): in every key's working and
+    tables, a letter in brackets is a part's marker at the end of its line, never a row, symbol or note."""
+    from exgen.render.text import key_lines
+
+    found = []
+    for template in bank:
+        for seed in SEEDS[:3]:
+            lines = key_lines(make_variant(template, seed))
+            for line in lines[lines.index("Worked solution") + 1:lines.index("Answers")]:
+                body = re.sub(r"(\s+\([a-z]\))+$", "", line)
+                if re.search(r"\([a-h]\)", body):
+                    found.append((template.id, seed, body.strip()))
+    assert not found, (len(found), found[:5])

@@ -218,8 +218,8 @@ def mistakes_apart(part: PartSpec, answer, derivation: Derivation, check: bool =
         elif name in named and not any((s, name) in derivation.if_apart for s in steps):
             tolerance = kind.tolerance_text(part)
             reason = (f"part {part.id}: the mistake {name!r} {MISTAKE_IS_ANSWER}" if tolerance == "exact" else
-                      f"part {part.id}: the mistake {name!r} {MISTAKE_CLOSE} {MISTAKE_GAP:g} times the part's "
-                      f"tolerance ({tolerance}) of the answer")
+                      f"part {part.id}: the mistake {name!r} {MISTAKE_CLOSE} {MISTAKE_GAP:g} times {tolerance} of "
+                      f"the answer")
             if check:
                 raise InvalidDraw(reason)
             derivation.warnings.append(reason)
