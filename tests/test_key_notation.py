@@ -101,3 +101,27 @@ def test_no_label_in_the_working_reads_as_a_part(bank):
                 if re.search(r"\([a-h]\)", body):
                     found.append((template.id, seed, body.strip()))
     assert not found, (len(found), found[:5])
+
+
+def test_every_symbol_a_worked_line_uses_is_defined_before(bank):
+    """R₀ and R₉₀ stood in √(R₀² + R₉₀²) with no line of their own (the table's sums): every value a
+    formula names is a given, an earlier line, or said in words by an earlier (or its own) line's note,
+    in every key."""
+    from exgen.render.solution import solution
+    from exgen.render.unicode_math import latex_to_unicode, text_to_plain
+
+    found = []
+    for template in bank:
+        for seed in SEEDS[:3]:
+            variant = make_variant(template, seed)
+            worked = solution(variant)
+            known = {g.name for g in worked.given} | {p.name for p in variant.params}
+            said = ""
+            for line in worked.lines:
+                said += " " + text_to_plain(line.note)
+                if line.formula is not None:
+                    for slot, symbol in zip(line.formula.formula.slots, line.formula.fills):
+                        if slot.name not in known and latex_to_unicode(symbol) not in said:
+                            found.append((template.id, seed, slot.name, latex_to_unicode(symbol)))
+                known.add(line.name)
+    assert not found, (len(found), sorted(set((f[0], f[3]) for f in found))[:10])

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from .. import units
@@ -159,15 +159,48 @@ def _solution(variant) -> Solution:
 def _blocks(variant, values, plans, in_si, figures) -> list:
     hidden = set().union(*(i.hides for i in variant.inserts if isinstance(i, Table))) if variant.inserts else set()
     answered = _answered(variant)
+    sums = _table_sums(variant)
     blocks, inserts = [], sorted(variant.inserts, key=lambda i: i.at)
     for number, step in enumerate(variant.steps):
         while inserts and inserts[0].at <= number:
             blocks.append(_insert(inserts.pop(0), values))
         if step.name in hidden and step.name not in answered:
             continue
-        blocks.append(_line(variant, step, values, plans.get(step.name), in_si, answered, figures))
+        line = _line(variant, step, values, plans.get(step.name), in_si, answered, figures)
+        blocks.append(_defining(line, plans.get(step.name), values, sums))
     blocks += [_insert(i, values) for i in inserts]
     return blocks
+
+
+def _table_sums(variant) -> dict[str, str]:
+    """Step -> where a table shows it, for the steps a table shows alone: "= Σ mr cos θ" for a cell of its
+    Σ row, "in the table's column energy above U" for a cell of a row (no row label: a number in a hint
+    may give an answer away)."""
+    out = {}
+    for insert in variant.inserts:
+        if not isinstance(insert, Table):
+            continue
+        rows = [(row, False) for row in insert.rows] + ([(insert.total, True)] if insert.total else [])
+        for row, total in rows:
+            for cell, column in zip(row, insert.columns):
+                if isinstance(cell, str) and cell.startswith("@") and cell[1:] in insert.hides:
+                    head = column.head[:1].lower() + column.head[1:] if column.head[1:2].islower() else column.head
+                    out.setdefault(cell[1:], f"= Σ {column.head}" if total else f"in the column {head}")
+    return out
+
+
+def _defining(line: WorkLine, planned, values, sums: dict[str, str]) -> WorkLine:
+    """The line, its note saying what the table's sums it is the first to use stand for (R₀ = Σ mr cos θ):
+    a symbol the key uses is defined where it is first met. `sums` loses the names it defines."""
+    if planned is None:
+        return line
+    named = [s.name for s in planned[0].slots if s.name in sums]
+    named = list(dict.fromkeys(named))
+    if not named:
+        return line
+    said = ", ".join(f"${values[n].symbol}$ {sums.pop(n)}" for n in named)
+    note = f"{line.note}; " if line.note else ""
+    return replace(line, note=f"{note}from the table: {said}")
 
 
 def _figures_used(blocks, plans) -> dict[tuple[str, str], int]:
