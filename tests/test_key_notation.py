@@ -125,3 +125,26 @@ def test_every_symbol_a_worked_line_uses_is_defined_before(bank):
                             found.append((template.id, seed, slot.name, latex_to_unicode(symbol)))
                 known.add(line.name)
     assert not found, (len(found), sorted(set((f[0], f[3]) for f in found))[:10])
+
+
+def test_the_points_a_governor_s_moments_are_taken_about_are_said_in_words(bank):
+    """The Porter keys named I, Z and Y, which their figures do not mark: every key whose working takes
+    moments about I says what X, I, Z and Y are, on or before the first line that names them."""
+    from exgen.render.solution import solution
+    from exgen.render.unicode_math import latex_to_unicode, text_to_plain
+
+    checked = 0
+    for template in bank:
+        for seed in SEEDS[:2]:
+            said = ""
+            for line in solution(make_variant(template, seed)).lines:
+                said += " " + text_to_plain(line.note)
+                symbol = latex_to_unicode(line.symbol)
+                if re.match(r"(XZ|IZ|IY|ZY)", symbol) or "about I" in said:
+                    checked += 1
+                    drawn = "XY" if "pivot C" in said else ""  # a Proell figure marks B and C itself
+                    assert "instantaneous centre" in said and all(f"{p} is" in said or f"{p}," in said or
+                                                                   f"pivot {p}" in said for p in "XIZY" if p not in drawn), \
+                        (template.id, seed, symbol, said)
+                    break
+    assert checked

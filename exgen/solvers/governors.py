@@ -17,6 +17,20 @@ import math
 
 from ..mechanics import governors as gv
 
+#: The points the moments are taken about, which the figure does not mark: said where the key first names them.
+POINTS = ("X is the ball's centre; I, the lower arm's instantaneous centre, where the upper arm's line meets "
+          "the horizontal through the sleeve pivot Y; Z, the point of that horizontal below X")
+
+PROELL_POINTS = ("I is the lower arm's instantaneous centre, where the upper arm's line meets the horizontal "
+                 "through the sleeve pivot C; Z, the point of that horizontal below the joint B")
+
+
+def _with_points(d, note: str) -> str:
+    """`note`, with the points X, I, Z and Y said in words the first time a step names them."""
+    if any(s.note and POINTS in s.note for s in d.steps):
+        return note
+    return f"{note}. {POINTS}" if note else POINTS
+
 G = gv.G
 RPM = 2 * math.pi / 60
 
@@ -47,13 +61,13 @@ def _position(p, d, linkage: gv.Linkage, tag: str, r_name: str, r: float, sleeve
     arms = gv.lever_arms(linkage, at, extension, tilt)
     if extension and not tilt:
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}", formula=rf"@l\cos @beta_{tag} + @e",
-               note="height of the ball above the sleeve pivots: the extension is upright")
+               note=_with_points(d, "height of the ball above the sleeve pivots: the extension is upright"))
         d.step(f"x_{tag}", arms.ball_radius, "m", symbol=rf"r_{{b{tag}}}", formula=f"@{r_name}",
                note="the ball turns at the joint's radius")
     elif extension:
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}",
                formula=rf"@l\cos @beta_{tag} + @e\cos(@beta_{tag} - @beta_1)",
-               note="height of the ball above the sleeve pivots")
+               note=_with_points(d, "height of the ball above the sleeve pivots"))
         d.step(f"x_{tag}", arms.ball_radius, "m", symbol=rf"r_{{b{tag}}}", formula=rf"@{r_name} + @e\sin(@beta_{tag} - @beta_1)",
                note="radius of the ball's path: the extension turns with the lower arm")
     if extension:
@@ -61,7 +75,7 @@ def _position(p, d, linkage: gv.Linkage, tag: str, r_name: str, r: float, sleeve
                formula=rf"@l\cos @beta_{tag}\tan @alpha_{tag}" + (rf" + @{r_name} - @x_{tag}" if tilt else ""))
     else:
         d.step(f"XZ_{tag}", arms.XZ, "m", symbol=rf"XZ_{tag}", formula=rf"@l\cos @beta_{tag}",
-               note="height of the ball above the sleeve pivots")
+               note=_with_points(d, "height of the ball above the sleeve pivots"))
         d.step(f"IZ_{tag}", arms.IZ, "m", symbol=rf"IZ_{tag}", formula=rf"@XZ_{tag}\tan @alpha_{tag}")
     ball = "x_" + tag if extension else r_name
     d.step(f"IY_{tag}", arms.IY, "m", symbol=rf"IY_{tag}", formula=rf"@IZ_{tag} + @{ball} - @e_l",
@@ -162,7 +176,7 @@ def porter_sleeve_friction(p, d):
     start = gv.pose_at_angle(linkage, p.alpha0)
     arms0 = gv.lever_arms(linkage, start)
     r0 = d.step("r_0", start.r, "m", formula=r"@e + @l\sin @alpha0")
-    d.step("h_0", arms0.XZ, "m", formula=r"@l\cos @alpha0", note="XZ = h")
+    d.step("h_0", arms0.XZ, "m", formula=r"@l\cos @alpha0", note=_with_points(d, "XZ = h"))
     iz0 = d.step("IZ_0", arms0.IZ, "m", symbol=r"IZ_0", formula=r"@l\sin @alpha0", note="IY = 2 IZ: equal arms and offsets")
     force0 = d.step("F_0", p.m * p.N0 ** 2 * r0, "N", symbol=r"F_0", formula=r"@m\,@N0^2\,@r_0")
     friction = d.step("f", gv.sleeve_friction(force0, p.m, p.M, arms0), "N", symbol=r"f",
@@ -195,7 +209,7 @@ def porter_dead_load(p, d):
     linkage = gv.Linkage(p.l, p.l, p.e, p.e)
     mid = gv.pose_at_angle(linkage, p.alpha)
     arms = gv.lever_arms(linkage, mid)
-    h = d.step("h", arms.XZ, "m", formula=r"@l\cos @alpha", note="XZ = h")
+    h = d.step("h", arms.XZ, "m", formula=r"@l\cos @alpha", note=_with_points(d, "XZ = h"))
     iz = d.step("IZ", arms.IZ, "m", symbol=r"IZ", formula=r"@l\sin @alpha", note="ZY = IZ; IY = 2 IZ")
     r = d.step("r", iz + p.e, "m", formula=r"@IZ + @e")
     force = d.step("F", p.m * p.N ** 2 * r, "N", formula=r"@m\,@N^2\,@r")
@@ -237,7 +251,7 @@ def proell_extension(p, d):
     mid = gv.pose(linkage, p.r)
     d.require(math.radians(15) <= mid.alpha <= math.radians(55), "arms too near the vertical or the horizontal")
     arms = gv.lever_arms(linkage, mid)
-    iz = d.step("IZ", arms.IZ, "m", symbol=r"IZ", formula=r"@r - @e", note="IZ = ZC; IC = 2 IZ; the extension is vertical")
+    iz = d.step("IZ", arms.IZ, "m", symbol=r"IZ", formula=r"@r - @e", note=f"IZ = ZC; IC = 2 IZ; the extension is vertical. {PROELL_POINTS}")
     bz = d.step("BZ", mid.h_lower, "m", symbol=r"BZ", formula=r"\sqrt{@l^2 - @IZ^2}")
     force = d.step("F", p.m * p.N ** 2 * p.r, "N", formula=r"@m\,@N^2\,@r")
     ext = d.step("AB", (p.m + p.M) * G * iz / force - bz, "m", symbol=r"AB",
