@@ -89,3 +89,12 @@ def test_values_that_cannot_make_a_belt_drive_are_refused_in_plain_words(capsys)
     assert code != 0 and "math domain" not in err and "Traceback" not in err
     assert "the difference of their radii is more than the centre distance" in err
     assert "X > d1 + d2" in err
+
+
+def test_a_unit_of_inches_is_named_in_words(bank):
+    """"a length is asked (in in)": the inch is spelt out where a sentence names it."""
+    found = [(t, p) for t in bank for p in t.parts if p.unit == "in"]
+    assert found
+    for template, part in found:
+        message = _result(make_variant(template, 1), part, "5 kg").message
+        assert "(in inches)" in message and "in in)" not in message, message

@@ -154,7 +154,7 @@ def kind_of(unit: str) -> str:
 def unit_name(unit: str) -> str:
     """How a unit reads in a sentence: 'degrees' rather than a bare '°'."""
     shown = units.pretty_unit(unit)
-    return {"\u00b0": "degrees", "%": "percent", "": "a pure number"}.get(shown, shown)
+    return {"\u00b0": "degrees", "%": "percent", "": "a pure number", "in": "inches"}.get(shown, shown)
 
 
 def with_article(kind: str) -> str:
