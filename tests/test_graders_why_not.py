@@ -82,7 +82,7 @@ def test_the_answer_to_another_part_is_named_with_its_part(beam):
 
 def test_a_step_on_the_way_says_what_is_worked_out_from_it(beam):
     ball = beam.step("I_ball").value
-    assert graded(beam, "a", f"{ball:.4g}").message.endswith("Your value is I_(ball) = m_Bb², a step on the way: "
+    assert graded(beam, "a", f"{ball:.4g}").message.endswith("Your value is I_(ball) = m_B b², a step on the way: "
                                                               "I_O is worked out from it.")
     beam_only = beam.step("I_beam").value
     assert "a value of the working that this part does not use" in graded(beam, "b", f"{beam_only:.4g}").message

@@ -76,7 +76,7 @@ def test_a_double_prime_is_one_symbol_in_the_pdf(bank):
 
 
 def test_a_one_letter_subscript_never_runs_into_the_next_symbol(bank):
-    """'m_Bb²' read as m with subscript Bb: a subscript without a Unicode form is bracketed when a symbol
+    """'m_Bb²' read as m with subscript Bb: a subscript without a Unicode form is set off by a space when a symbol
     follows it directly (m_B b²), in every plain key."""
     found = []
     for template in bank:
