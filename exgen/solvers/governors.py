@@ -133,12 +133,13 @@ def _controlling_curve(p, d) -> None:
     forces = {}
     for tag, r in (("1", "r1"), ("2", "r2")):
         omega = d.value_of(f"omega_{tag}")
-        forces[tag] = d.step(f"F_{tag}", p.m * omega ** 2 * getattr(p, r), "N", symbol=f"F_{tag}",
+        # a step of its own (Fc): F_1 and F_2 are the moments' results, and one name is one step
+        forces[tag] = d.step(f"Fc_{tag}", p.m * omega ** 2 * getattr(p, r), "N", symbol=f"F_{tag}",
                              formula=rf"@m\,@omega_{tag}^2\,@{r}", note="the controlling force on each ball (eq 4.7)")
-        d.mistake(f"F_{tag}", "rpm_as_rad_s", p.m * (omega * 60 / (2 * math.pi)) ** 2 * getattr(p, r))
-        d.mistake(f"F_{tag}", "speed_not_squared", p.m * omega * getattr(p, r))
+        d.mistake(f"Fc_{tag}", "rpm_as_rad_s", p.m * (omega * 60 / (2 * math.pi)) ** 2 * getattr(p, r))
+        d.mistake(f"Fc_{tag}", "speed_not_squared", p.m * omega * getattr(p, r))
     slope, intercept = gv.controlling_line(forces["1"], p.r1, forces["2"], p.r2)
-    d.step("F_axis", intercept, "N", symbol="b", formula=r"@F_1 - \frac{@F_2 - @F_1}{@r2 - @r1}\,@r1",
+    d.step("F_axis", intercept, "N", symbol="b", formula=r"@Fc_1 - \frac{@Fc_2 - @Fc_1}{@r2 - @r1}\,@r1",
            note="where the line through the two points cuts the force axis, r = 0")
     kind = gv.stability(intercept, forces["2"])
     reason = {gv.STABLE: "below the origin: F/r rises with r, one radius for each speed",
