@@ -106,7 +106,7 @@ class QuestionMarker:
         if carried and _safe(matches, given.value, carried[0].value):
             return result.make(CARRIED, CARRIED_FORWARD.format(parts=_names(carried[2])))
         recorded = [self.variant.mistakes.get(part.id, {})] + ([carried[1]] if carried else [])
-        mistake = template_mistake(part, given.value, recorded, matches) or generic_mistake(part, given, answer.value)
+        mistake = template_mistake(part, given.value, recorded, matches, self.variant.fill) or generic_mistake(part, given, answer.value)
         if mistake is not None:
             return result.make(WRONG, mistake.message, mistake.name)
         why = why_not(self.variant, part, given)

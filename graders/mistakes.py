@@ -22,12 +22,13 @@ NARROWING = (0.5, 0.25, 0.125, 0.0625, 0.03125, 0.015625)
 
 
 def template_mistake(part: PartSpec, value: Any, recorded: Iterable[Mapping[str, Any]],
-                     matches: Matcher) -> Mistake | None:
+                     matches: Matcher, write: Callable[[str], str] = str) -> Mistake | None:
     """The recorded mistake the answer matches: those the template lists, in its order, then any others
     the solver records. Where the values of several lie within the tolerance of the answer (two slips that
     land 0.5 % apart), the one the answer stays close to as the tolerance narrows is named, so that a
     student who typed one slip's value to four figures is not told of the other; equal values name the
-    first listed."""
+    first listed. `write` writes the message with the variant the answer belongs to (Variant.fill), so what
+    it says of the draw is the student's own sheet's."""
     recorded = [r for r in recorded if r]
     says = {m.when: m.say for m in part.mistakes}
     names = list(says) + [n for r in recorded for n in r if n not in says]
@@ -43,7 +44,7 @@ def template_mistake(part: PartSpec, value: Any, recorded: Iterable[Mapping[str,
     if not candidates:
         return None
     name = candidates[0][0]
-    return Mistake(name, message_for(name, says.get(name, "")))
+    return Mistake(name, write(message_for(name, says.get(name, ""))))
 
 
 def generic_mistake(part: PartSpec, given: Given, expected: Any) -> Mistake | None:

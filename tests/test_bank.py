@@ -65,11 +65,22 @@ def test_good_template_loads(tmp_path):
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: [ok, 3]}", "t.yaml:15:57: part (a), hints: must be a list of hint"),
     ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, hints: ['{{ d9 }}']}",
      "t.yaml:15:65: part (a), hint 1: refers to unknown parameter(s): d9"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, mistakes: [{when: x, say: 'At {{ d9 }}.'}]}",
+     "part (a), mistake 1, say: refers to unknown parameter(s): d9"),
+    ("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, mistakes: [{when: x, say: 'At {{ d1 }.'}]}",
+     "part (a), mistake 1, say: template syntax error on line 1"),
+    ("  t:  {value: 8, unit: mm}", "  steps: {value: 8, unit: mm}", "'steps' is the name under which feedback and hints"),
 ])
 def test_each_problem_names_file_line_column_and_key_as_an_author_reads_it(tmp_path, old, new, expected):
     assert old in GOOD
     found = problems(write(tmp_path, GOOD.replace(old, new)))
     assert any(expected in p for p in found), found
+
+
+def test_a_say_may_name_the_givens_and_the_solvers_word_steps(tmp_path):
+    text = GOOD.replace("answer: N2_slip, unit: rpm}", "answer: N2_slip, unit: rpm, mistakes: "
+                        "[{when: x, say: '{{ d1 }} and {{ steps.anything }}'}]}")
+    assert load_template(write(tmp_path, text)).parts[0].mistakes[0].say == "{{ d1 }} and {{ steps.anything }}"
 
 
 def test_hints_are_kept_in_order_and_filled_with_the_variants_values(tmp_path):

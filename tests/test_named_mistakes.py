@@ -39,7 +39,7 @@ def test_every_named_mistake_is_recognised_with_its_own_words(bank, template_id)
                         and same_value(recorded[m.when], recorded[spec.when], part)]
                 assert result.mistake in same, (seed, part.id, spec.when, result.mistake)
                 if result.mistake == spec.when:
-                    assert result.message == (spec.say or default_messages()[spec.when]), (seed, part.id)
+                    assert result.message == variant.mistake_message(part.id, spec.when), (seed, part.id)
                 seen.add((part.id, spec.when))
     named = {(p.id, m.when) for p in template.parts for m in p.mistakes}
     assert named <= seen, f"listed but never met over {len(SEEDS)} seeds: {sorted(named - seen)}"

@@ -4,7 +4,8 @@ A solver that raises anything but a rejection (InvalidDraw) fails the template: 
 never a redraw. Per variant: the constraints hold, every answer is a finite number of the asked kind, re-running
 the derivation with its own answers changes nothing (ECF is consistent), and the key grades
 itself at 100 %. Per template: every mistake a part names is recorded by the solver and has words
-for the student, every part a part `uses:` changes its answer, and seeds give distinct problems.
+for the student, no feedback or hint states in fixed words what the draw decides, every part a part
+`uses:` changes its answer, and seeds give distinct problems.
 """
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 
 from ..answertypes import answer_type
+from .draw_words import misstatements
 from ..draw.values import failed_requirement
 from ..errors import ExgenError, FormatProblem, SolverFailure, WrongKind
 from ..load.mistake_messages import default_messages
@@ -89,6 +91,7 @@ def validate_template(template: Template, seeds: int = 200) -> Report:
             if len(report.problems) < 10:
                 report.problems.append(f"seed {variant.seed}: {problem}")
     _check_mistakes(template, variants, report)
+    _check_texts(variants, report)
     _check_reports(template, variants, report)
     _check_uses(template, variants, report)
     if report.distinct < DISTINCT_WARNING:
@@ -176,6 +179,17 @@ def _check_mistakes(template: Template, variants: list[Variant], report: Report)
             if not mistake.say and mistake.when not in default_messages():
                 report.warnings.append(f"part {part.id}: mistake {mistake.when!r} has no `say:` and no default "
                                        "message in exgen/data/mistakes.yaml")
+
+
+def _check_texts(variants: list[Variant], report: Report) -> None:
+    """Every feedback text and hint is written with each variant it is shown beside, and none states in
+    fixed words a value its draw decided otherwise (exgen.check.draw_words); each problem once, with the
+    first seed that shows it."""
+    found: dict[str, int] = {}
+    for variant in variants:
+        for problem in misstatements(variant):
+            found.setdefault(problem, variant.seed)
+    report.problems += [f"seed {seed}: {problem}" for problem, seed in list(found.items())[:10]]
 
 
 def _check_uses(template: Template, variants: list[Variant], report: Report) -> None:

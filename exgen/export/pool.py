@@ -17,7 +17,6 @@ from ..answertypes import answer_type
 from ..answertypes.lms import NoLmsForm
 from ..draw.seeds import pool_seed
 from ..figures import figure_svg, key_figure_svgs, Drawn
-from ..load.mistake_messages import message_for
 from ..load.template import Template
 from ..render.context import key_context
 from ..runtime.progress import Progress, silent
@@ -154,10 +153,10 @@ def make_item(question: PoolQuestion, index: int, variant: Variant, target, src:
 
 def _item_part(variant: Variant, part, scale: float, target) -> ItemPart:
     kind = answer_type(part)
-    says = {m.when: m.say for m in part.mistakes}
+    says = list(dict.fromkeys(m.when for m in part.mistakes))
     recorded = variant.mistakes.get(part.id, {})
     order = [n for n in says if n in recorded] + [n for n in recorded if n not in says]  # as the grader tries them
-    mistakes = {name: (recorded[name], target.text(message_for(name, says.get(name, "")))) for name in order}
+    mistakes = {name: (recorded[name], target.text(variant.mistake_message(part.id, name))) for name in order}
     ask = target.text(variant.asks[part.id])
     value = variant.answers[part.id].value
     try:

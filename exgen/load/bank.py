@@ -19,7 +19,7 @@ from . import expr, references
 from .domains import domain_of, drawn_values, parse_domain
 from .keypaths import key_words
 from .template import MistakeSpec, ParamSpec, PartSpec, ReportSpec, Template
-from .text import undeclared_names
+from .text import STEPS, undeclared_names
 from .versions import data_digest
 
 BANKS_ENV = "EXGEN_BANKS"
@@ -186,6 +186,10 @@ class _Reader:
             where = ("params", name)
             if not str(name).isidentifier():
                 self.error(where, "a parameter name must be a plain identifier (letters, digits, _)")
+                continue
+            if name == STEPS:
+                self.error(where, f"{STEPS!r} is the name under which feedback and hints read the solver's "
+                                  "steps: name the parameter otherwise")
                 continue
             if not isinstance(spec, dict):
                 self.error(where, "must be a mapping such as {min: 1, max: 5, step: 0.5, unit: m}")
@@ -414,7 +418,7 @@ class _Reader:
             out.append(PartSpec(
                 id=part_id, ask=str(spec.get("ask", "")), answer=str(spec.get("answer", "")),
                 unit=str(spec.get("unit", "")), type=kind, tol=tol, points=float(points),
-                mistakes=self.mistakes(spec.get("mistakes"), where), uses=uses, options=options,
+                mistakes=self.mistakes(spec.get("mistakes"), names, where), uses=uses, options=options,
                 hints=self.hints(spec.get("hints"), names, where),
             ))
             seen.append(part_id)
@@ -428,10 +432,12 @@ class _Reader:
             self.error(where + ("hints",), "must be a list of hint texts, first to last")
             return ()
         for j, hint in enumerate(data):
-            self.check_text(hint, names, where + ("hints", j))
+            self.check_text(hint, names | {STEPS}, where + ("hints", j))
         return tuple(h.strip() for h in data)
 
-    def mistakes(self, data, where) -> tuple[MistakeSpec, ...]:
+    def mistakes(self, data, names: set, where) -> tuple[MistakeSpec, ...]:
+        """`mistakes:` each {when: name, say: text}; a `say:` may name parameters and the solver's word steps
+        (`{{ steps.name }}`), as a hint may."""
         if data is None:
             return ()
         if not isinstance(data, list):
@@ -443,5 +449,7 @@ class _Reader:
                 self.error(where + ("mistakes", j), "needs `when:` naming a mistake value the solver records")
                 continue
             self.unknown_keys(item, {"when", "say"}, where + ("mistakes", j))
+            if item.get("say"):
+                self.check_text(str(item["say"]), names | {STEPS}, where + ("mistakes", j, "say"))
             out.append(MistakeSpec(str(item["when"]), str(item.get("say", ""))))
         return tuple(out)

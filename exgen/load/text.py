@@ -1,8 +1,16 @@
-"""Statement text: Jinja2 with StrictUndefined, so a misspelt parameter is an error, not a blank."""
+"""A template's texts: Jinja2 with StrictUndefined, so a misspelt parameter is an error, not a blank.
+
+A statement and an ask see the given values by name. A text shown beside a variant once it is solved (a
+mistake's `say:`, a hint) sees them too, and the solver's steps whose values are words under STEPS
+(`{{ steps.spin_vector }}` prints "towards the bow"), so that what it says of the draw is written from it.
+"""
 from __future__ import annotations
 
 import re
 from functools import lru_cache
+
+#: The name a feedback text or a hint reads the solver's word steps under.
+STEPS = "steps"
 
 
 @lru_cache(maxsize=1)
@@ -42,3 +50,18 @@ def render_text(text: str, context: dict) -> str:
         if filled is not None and "{{" not in _PLAIN_NAME.sub("", text):
             return filled.strip()
     return _compile(text).render(context).strip()
+
+
+def fixed_parts(text: str) -> list[str]:
+    """The words a text prints in every draw: its literal runs outside any `{% if %}` or `{% for %}`
+    (what `{{ }}` prints, and what a branch prints, are written from the variant). Raises ValueError
+    on a Jinja syntax error."""
+    import jinja2
+    from jinja2 import nodes
+
+    try:
+        tree = environment().parse(text)
+    except jinja2.TemplateSyntaxError as exc:
+        raise ValueError(f"template syntax error on line {exc.lineno}: {exc.message}") from exc
+    return [node.data for output in tree.body if isinstance(output, nodes.Output)
+            for node in output.nodes if isinstance(node, nodes.TemplateData)]

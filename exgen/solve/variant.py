@@ -17,7 +17,8 @@ from ..draw.values import draw_values, failed_requirement, generator, si_values
 from ..errors import DrawError, ExgenError, InvalidDraw, NoAnswer, SolverFailure, TemplateError
 from ..load.references import resolve
 from ..load.template import PartSpec, Template, default_symbol
-from ..load.text import render_text
+from ..load.mistake_messages import message_for
+from ..load.text import STEPS, render_text
 from .derivation import PLACEHOLDER, Derivation, Params, Step
 
 #: How a warning for values a user gave says a named mistake would be marked right (exgen solve explains it).
@@ -121,8 +122,23 @@ class Variant:
         return next(s for s in self.steps if s.name == name)
 
     def fill(self, text: str) -> str:
-        """A text of the template (a hint, say) with this variant's given values, as its statement has them."""
-        return render_text(text, {p.name: p for p in self.params})
+        """A text of the template shown beside this variant (a hint, a mistake's feedback) with its given
+        values, as its statement has them, and its word steps under `steps` (exgen.load.text)."""
+        return render_text(text, self.text_context)
+
+    @property
+    def text_context(self) -> dict[str, Any]:
+        """What a hint or a mistake's feedback may name: each given, and under `steps` the steps whose values
+        are words ("towards the bow", "left"); numbers stay the working's, which withholds what gives an
+        answer away."""
+        words = {s.name: s.value for s in self.steps if isinstance(s.value, str)}
+        return {**{p.name: p for p in self.params}, STEPS: words}
+
+    def mistake_message(self, part_id: str, name: str) -> str:
+        """The feedback for the named mistake in a part: its `say:`, else the name's default text, written
+        with this variant."""
+        says = {m.when: m.say for m in self.template.part(part_id).mistakes}
+        return self.fill(message_for(name, says.get(name, "")))
 
 
 def make_variant(template: Template, seed: int, max_tries: int = MAX_TRIES, rejected=None) -> Variant:

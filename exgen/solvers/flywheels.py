@@ -101,7 +101,7 @@ def flywheel_rim(p, d):
     d.mistake("b", "ratio_inverted", thickness / p.ratio)
     d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
            note="the rim's speed at its mean radius: " + ("within cast iron's 35 m/s; a cast-steel rim stands more"
-                 if p.rho >= CAST_STEEL else "a cast-iron rim is kept below about 35 m/s"))
+                 if p.rho >= CAST_STEEL else "a cast-iron rim is kept under about 35 m/s"))
 
 
 # ---- Example 3.2: a torque-time diagram ----------------------------------------------------------

@@ -130,7 +130,7 @@ def car_wheel_reactions(p, d):
     d.mistake("P_e", "track_for_wheelbase", ce / (2 * p.x))
     d.mistake("P_e", "not_shared", ce / p.b)
     spin = gy.axial_spin(p.sense, "front")
-    couple = directions(d, spin, f"{p.sense} seen from the front: curl the right hand's fingers the way it "
+    couple = directions(d, spin, f"{p.sense} seen from the front: curl the right-hand fingers the way it "
                                  f"turns and the thumb points {'away from' if p.sense == 'clockwise' else 'towards'} "
                                  "the viewer", gy.turning(p.turn), turn_note(p.turn), "vehicle")
     loaded = "rear" if gy.pitch_effect(couple) == "nose up" else "front"

@@ -47,7 +47,7 @@ def precession(p, d, speed: str = "v", radius: str = "R"):
 def axial_spin_note(sense: str, viewed_from: str, looking: str) -> str:
     """Why a rotor seen turning one way has its spin vector pointing where it does."""
     away = "away from" if sense == "clockwise" else "towards"
-    return (f"{sense} seen from the {looking}: curl the right hand's fingers the way the rotor turns and the "
+    return (f"{sense} seen from the {looking}: curl the right-hand fingers the way the rotor turns and the "
             f"thumb points {away} the viewer")
 
 
@@ -106,8 +106,8 @@ def vehicle_rotor_springs(p, d):
     same = p.spin == "same"
     couple = directions(
         d, gy.wheel_spin(same),
-        ("the road wheels rolling forward spin about the axis pointing to the vehicle's left (their tops move "
-         "forward); the flywheel turns " + ("the same way" if same else "the opposite way")),
+        ("the road wheels rolling forward spin about the axis pointing to the vehicle's left-hand side (their tops "
+         "move forward); the flywheel turns " + ("the same way" if same else "the opposite way")),
         gy.turning(p.turn), turn_note(p.turn), "vehicle")
     pressed = gy.roll_effect(couple)
     lifted = "left" if pressed == "right" else "right"
