@@ -54,7 +54,8 @@ def rotor_bearing_reactions(v):
     out = {"a": {"rpm_as_rad_s": couple / RPM, "radius_for_k": couple / 2}, "b": {"precession_reversed": other(v, "b")}}
     for part in ("c", "d"):
         wrong = {"gyro_added_where_it_relieves" if part == lifted else "gyro_subtracted_where_it_adds":
-                 reaction[part] + (2 * force if part == lifted else -2 * force), "weight_ignored": force}
+                 reaction[part] + (2 * force if part == lifted else -2 * force), "weight_ignored": force,
+                 "gyro_ignored": share[part]}                    # the static reaction, the couple left out
         if abs(g.a - g.l / 2) > 0.05 * g.l:
             wrong["weight_halved"] = weight / 2 + reaction[part] - share[part]
         out[part] = wrong
