@@ -55,7 +55,7 @@ def simple_pendulum(v):
     g = printed(v, "l", "T")
     w = math.sqrt(G / g.l)
     answers = {"a": w, "b": hz(w), "c": TWO_PI / w, "d": G * (g.T / TWO_PI) ** 2}
-    mistakes = {"b": {"omega_for_f": w}, "c": {"omega_for_f": 1 / w},
+    mistakes = {"a": {"sqrt_missing": G / g.l}, "b": {"omega_for_f": w}, "c": {"omega_for_f": 1 / w},
                 "d": {"missing_2pi": G * g.T ** 2, "period_as_frequency": G / (TWO_PI * g.T) ** 2}}
     return answers, mistakes
 
@@ -127,7 +127,9 @@ def cantilever_end_mass(v):
     answers = {"a": hz(w_l), "b": hz(w_t), "c": g.m * G / end}
     mistakes = {"a": {"omega_for_f": w_l, "diameter_for_radius": hz(omega(g.E * math.pi * g.d ** 2 / g.l, g.m))},
                 "b": {"omega_for_f": w_t, "polar_for_bending": hz(omega(3 * g.E * 2 * bending / g.l ** 3, g.m)),
-                      "simply_supported": hz(omega(48 * g.E * bending / g.l ** 3, g.m))}}
+                      "simply_supported": hz(omega(48 * g.E * bending / g.l ** 3, g.m))},
+                "c": {"simply_supported": g.m * G * g.l ** 3 / (48 * g.E * bending),   # 48EI/l³ for 3EI/l³
+                      "polar_for_bending": g.m * G * g.l ** 3 / (3 * g.E * 2 * bending)}}  # J = 2I for I
     return answers, mistakes
 
 
@@ -203,7 +205,8 @@ def damped_spring_mass(v):
     zeta = g.C / critical
     wd = w * math.sqrt(1 - zeta ** 2)
     answers = {"a": critical, "b": zeta, "c": hz(wd), "d": TWO_PI / wd}
-    mistakes = {"a": {"factor_two_missing": g.m * w}, "c": {"omega_for_f": wd, "damping_ignored": hz(w)},
+    mistakes = {"a": {"factor_two_missing": g.m * w}, "b": {"factor_two_missing": g.C / (g.m * w)},
+                "c": {"omega_for_f": wd, "damping_ignored": hz(w)},
                 "d": {"omega_for_f": 1 / wd, "damping_ignored": TWO_PI / w}}
     return answers, mistakes
 

@@ -47,6 +47,7 @@ def damped_spring_mass(p, d):
                 note="critical damping")
     d.mistake("C_c", "factor_two_missing", p.m * omega)
     zeta = d.step("zeta", vb.damping_ratio(p.C, cc), "", symbol=r"\zeta", formula=r"\frac{@C}{@C_c}")
+    d.mistake("zeta", "factor_two_missing", p.C / (p.m * omega))
     d.require(0.05 <= zeta <= ZETA_MAX, "a damping ratio outside 0.05-0.6: not a practical damper")
     wd = d.step("omega_d", vb.damped_speed(omega, zeta), "rad/s", symbol=r"\omega_d",
                 formula=r"@omega_n\,\sqrt{1 - @zeta^2}", note="eq. 6.44")

@@ -37,6 +37,7 @@ def simple_pendulum(p, d):
     d.constant("g", vb.G, "m/s^2", note="standard gravity")
     d.step("omega_n", vb.pendulum_speed(p.l), "rad/s", symbol=r"\omega_n", formula=r"\sqrt{\frac{@g}{@l}}",
            note="from m l² θ̈ + m g l θ = 0 (eq. 6.8)")
+    d.mistake("omega_n", "sqrt_missing", vb.G / p.l)
     d.step("f_n", vb.frequency(d.value_of("omega_n")), "Hz", symbol="f_n", formula=r"\frac{@omega_n}{2\pi}")
     d.mistake("f_n", "omega_for_f", d.value_of("omega_n"))
     periodic_time(d)
@@ -160,4 +161,6 @@ def cantilever_end_mass(p, d):
     d.constant("g", vb.G, "m/s^2", note="standard gravity")
     d.step("delta_t", p.m * vb.G / s_trans, "m", symbol=r"\delta_t", formula=r"\frac{@m\,@g}{@s_t}",
            note=r"the static deflection under the disc's weight; $f_t = \sqrt{g/\delta}/2\pi$ again")
+    d.mistake("delta_t", "simply_supported", p.m * vb.G * p.l ** 3 / (48 * p.E * vb.second_moment(p.d)))
+    d.mistake("delta_t", "polar_for_bending", p.m * vb.G * p.l ** 3 / (3 * p.E * vb.polar_second_moment(p.d)))
     d.require(5 <= vb.frequency(w_trans) <= 200, "a transverse frequency outside 5-200 Hz")
