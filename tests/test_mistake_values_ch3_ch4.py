@@ -147,7 +147,11 @@ def porter_friction(v):
     def speed(sleeve_force: float) -> float:
         return governor_speed(g.m, sleeve_force, g.l, g.e_u, g.e_l, g.r)[0]
 
-    return {"b": {"friction_wrong_side": a["c"], "friction_doubled": speed(g.M * G + 2 * g.f)},
+    low = math.sqrt(g.l ** 2 - (g.r - g.e_l) ** 2)               # XZ: the lower arm's height
+    iz = (g.r - g.e_u) / math.sqrt(g.l ** 2 - (g.r - g.e_u) ** 2) * low  # I on the upper arm's line
+    at_iz = math.sqrt((g.m * G * iz + g.M * G / 2 * iz) / low / (g.m * g.r))  # half the sleeve load at IZ
+    return {"a": {"offset_ignored": governor_speed(g.m, g.M * G, g.l, g.e_u, g.e_u, g.r)[0], "sleeve_moment_arm": at_iz},
+            "b": {"friction_wrong_side": a["c"], "friction_doubled": speed(g.M * G + 2 * g.f)},
             "c": {"friction_wrong_side": a["b"], "friction_doubled": speed(g.M * G - 2 * g.f)}}
 
 

@@ -75,6 +75,7 @@ def ship_turbine(v):
     return {"a": {"rpm_as_rad_s": couple / RPM, "kmh_not_converted": couple * KMH},
             "b": {"precession_reversed": other(v, "b")},
             "c": {"degrees_not_converted": math.degrees(g.phi) * 2 * math.pi / g.T, "missing_2pi": g.phi / g.T},
+            "d": {"rpm_as_rad_s": g.m * g.k ** 2 * g.N * (g.phi * 2 * math.pi / g.T) / RPM},
             "e": {"precession_reversed": other(v, "e")},
             "f": {"rolling_like_steering": v.answers["b"].value, "rolling_like_pitching": v.answers["e"].value}}
 

@@ -373,6 +373,8 @@ def lift_counterweight(v):
     drum = spare * g.eta ** 2 / n                               # power through two contacts
     answers = {"a": n, "b": i_eq, "c": accelerating, "d": counterweight(drum)}
     mistakes = {"a": {"ratio_inverted": 1 / n},
+                "c": {"ratio_inverted": i_eq * g.a / r * n,           # the drum's α multiplied by n
+                      "diameter_for_radius": i_eq * g.a / g.dD / n},    # α = a/d
                 "b": {"one_contact_efficiency": g.I_M + (g.I_T * n1 ** 2 + g.I_D * n ** 2) / g.eta,
                       "ratio_not_squared": g.I_M + g.I_T * n1 / g.eta + g.I_D * n / g.eta ** 2,
                       "efficiency_multiplied": g.I_M + g.I_T * n1 ** 2 * g.eta + g.I_D * n ** 2 * g.eta ** 2},

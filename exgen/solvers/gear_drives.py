@@ -90,6 +90,8 @@ def lift_counterweight(p, d):
     r_d, alpha_m = _motor_acceleration(p, d, n)
     tau1 = d.step("tau_M1", i_eq * alpha_m, "N*m", symbol=r"\tau_{M1}", formula=r"@I_EQ\,@alpha_M",
                   note="the part of the motor torque that accelerates the shafts")
+    d.mistake("tau_M1", "ratio_inverted", i_eq * d.value_of("alpha_D") * n)
+    d.mistake("tau_M1", "diameter_for_radius", i_eq * p.a / p.dD / n)
     left = d.step("tau_D2", mg.available_torque(p.tau_M - tau1, n, p.eta ** 2), "N*m", symbol=r"\tau_{D2}",
                   formula=r"\frac{(@tau_M - @tau_M1)\,@eta^2}{@n}", note="what reaches the drum for the ropes")
     net = d.step("F_net", left / r_d, "N", symbol=r"\Delta T", formula=r"\frac{@tau_D2}{@r_D}",

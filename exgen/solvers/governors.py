@@ -156,6 +156,10 @@ def porter_friction(p, d):
     _within(d, linkage, p.r)
     load = d.step("W_s", p.M * G, "N", symbol=r"M g", formula=r"@M\,@g", note="the sleeve load")
     w, arms = _position(p, d, linkage, "0", "r", p.r, load, "@W_s", note="without friction")
+    same = gv.Linkage(p.l, p.l, p.e_u, p.e_u)
+    d.mistake("omega_0", "offset_ignored", gv.equilibrium_speed(p.m, load, gv.lever_arms(same, gv.pose(same, p.r))),
+              if_apart=True)
+    d.mistake("omega_0", "sleeve_moment_arm", math.sqrt((p.m * G * arms.IZ + load / 2 * arms.IZ) / arms.XZ / (p.m * p.r)))
     rising = d.step("omega_up", gv.equilibrium_speed(p.m, load + p.f, arms), "rad/s", symbol=r"\omega_{\max}",
                     formula=r"\sqrt{\frac{@m\,@g\,@IZ_0 + \tfrac{1}{2}(@W_s + @f)\,@IY_0}{@m\,@r\,@XZ_0}}",
                     note="about to rise: friction adds to the sleeve load")

@@ -209,6 +209,7 @@ def ship_turbine(p, d):
     d.mistake("omega_p", "missing_2pi", p.phi / p.T)
     d.step("C_p", gy.couple(inertia, d.value_of("omega"), rate), "N*m", symbol=r"C_{\max}",
            formula=r"@I\,@omega\,@omega_p", note="the greatest couple while pitching")
+    d.mistake("C_p", "rpm_as_rad_s", inertia * _rpm(p) * rate)
     rising = p.pitch == "rising"
     pitch_vector = gy.pitching(rising)
     pitch_couple = gy.reactive_couple(spin, pitch_vector)
