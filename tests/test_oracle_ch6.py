@@ -113,7 +113,9 @@ def stepped_shaft(v):
     total = shaft_length(TWO_PI * g.f)
     rest = total - (twist(g.l1, g.d1) + twist(g.l2, g.d2)) / twist(1.0, g.d1)   # what CD must count as
     answers = {"a": inertia, "b": total, "c": g.d1 * (g.l3 / rest) ** 0.25}
-    mistakes = {"b": {"omega_for_f": shaft_length(g.f)},
+    mistakes = {"a": {"k_not_squared": g.m * g.k},
+                "b": {"omega_for_f": shaft_length(g.f), "bending_for_polar": total / 2,   # l'/(G I) for l'/(G J)
+                      "radius_for_diameter": total / 16},                            # (d/2)⁴ for d⁴
                 "c": {"square_for_fourth_power": g.d1 * math.sqrt(g.l3 / rest), "ratio_inverted": g.d1 * (rest / g.l3) ** 0.25}}
     return answers, mistakes
 

@@ -120,11 +120,14 @@ def torsional_shaft_disc(p, d):
 def stepped_shaft(p, d):
     """Example 6.3: the diameter of the last step of a shaft that gives a flywheel a wanted frequency."""
     inertia = d.step("I", p.m * p.k ** 2, "kg*m^2", formula=r"@m\,@k^2", note="the flywheel")
+    d.mistake("I", "k_not_squared", p.m * p.k, if_apart=True)  # k = 1 m: k and k² agree
     omega = d.step("omega_n", 2 * math.pi * p.f, "rad/s", symbol=r"\omega_n", formula=r"2\pi\,@f")
     length = d.step("l_eq", vb.length_for_speed(p.G, p.d1, inertia, omega), "m", symbol=r"l'",
                     formula=r"\frac{@G\,\pi\,@d1^4}{32\,@I\,@omega_n^2}",
                     note=r"the length of a shaft of diameter $d_1$ that gives $f_n$: $\omega_n^2 = G\pi d_1^4/(32\,l'I)$")
     d.mistake("l_eq", "omega_for_f", vb.length_for_speed(p.G, p.d1, inertia, p.f))
+    d.mistake("l_eq", "bending_for_polar", length / 2)  # I = πd⁴/64 for J = πd⁴/32
+    d.mistake("l_eq", "radius_for_diameter", vb.length_for_speed(p.G, p.d1 / 2, inertia, omega))
     known = d.step("l_12", vb.equivalent_length([(p.l1, p.d1), (p.l2, p.d2)], p.d1), "m", symbol=r"l_{12}'",
                    formula=r"@l1 + @l2\left(\frac{@d1}{@d2}\right)^4",
                    note="the first two steps as lengths of diameter d₁: l (d₁/d)⁴ twists alike")
