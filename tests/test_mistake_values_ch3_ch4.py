@@ -82,7 +82,8 @@ def turning_moment_equation(v):
     return {"a": {"rpm_as_rad_s": a["a"] / RPM},
             "b": {"plus_minus_read_as_total": 2 * a["b"], "rpm_as_rad_s": a["b"] * RPM ** 2},
             "c": {"degrees_as_radians": (b * math.sin(n * degrees) + c * math.cos(n * degrees)) / a["b"],
-                  "total_torque": a["c"] + mean / a["b"]}}
+                  "total_torque": a["c"] + mean / a["b"],
+                  "harmonic_order_ignored": (b * math.sin(g.theta) + c * math.cos(g.theta)) / a["b"]}}
 
 
 def fluctuating_resistance(v):

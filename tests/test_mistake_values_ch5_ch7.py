@@ -207,6 +207,7 @@ def coupler_point(v):
     _, side_p = pose(theta4, not right)
     return {"a": {"wrong_circuit": other4, "relative_to_ground_line": theta4 - ground},
             "b": {"coupler_reversed": theta3 + math.pi, "relative_to_ground_line": theta3 - ground, "wrong_circuit": other3},
+            "c": {"wrong_vertex": math.acos((g.BP ** 2 + g.L3 ** 2 - g.CP ** 2) / (2 * g.BP * g.L3))},  # the angle at B
             "d": {"wrong_circuit": other_p.real, "other_side": side_p.real},
             "e": {"wrong_circuit": other_p.imag, "other_side": side_p.imag}}
 

@@ -76,6 +76,9 @@ def turning_moment_equation(p, d):
     degrees = math.degrees(p.theta)
     d.mistake("alpha", "degrees_as_radians", (p.b * math.sin(n * degrees) + p.c * math.cos(n * degrees)) / inertia)
     d.mistake("alpha", "total_torque", (excess + p.T0) / inertia)
+    # sin θ and cos θ for sin nθ and cos nθ: no slip at all when n = 1
+    d.mistake("alpha", "harmonic_order_ignored", (p.b * math.sin(p.theta) + p.c * math.cos(p.theta)) / inertia,
+              if_apart=True)
 
 
 def fluctuating_resistance(p, d):

@@ -118,6 +118,8 @@ def coupler_point(p, d):
     alpha = d.step("alpha", lk.cosine_law_angle(p.CP, p.L3, p.BP), "rad", symbol=r"\alpha",
                    formula=r"\cos^{-1}\frac{@CP^2 + @L3^2 - @BP^2}{2\,@CP\,@L3}",
                    note="the angle BCP of the coupler triangle (cosine law)")
+    # the cosine law with the sides about B taken for those about C: the triangle's angle at B
+    d.mistake("alpha", "wrong_vertex", lk.cosine_law_angle(p.BP, p.L3, p.CP), if_apart=True)
     right = str(p.side) == "right"
     theta6 = wrapped(d, "theta6", r"\theta_6", rf"@theta3 + 180^\circ {'+' if right else '-'} @alpha",
                      theta3 + math.pi + (alpha if right else -alpha),
