@@ -164,7 +164,15 @@ def rail_car_limiting_speed(v):
     wrong = {"gyro_ignored": limit(0.0), "motors_ignored": limit(2 * g.I_a),
              ("gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds"):
                  limit(2 * g.I_a - s * 2 * ratio * g.I_m)}
+    speed = limit(2 * g.I_a + s * 2 * ratio * g.I_m)             # the limiting speed itself
+
+    def couple(spin_inertia: float) -> float:                   # |Σ(IG)| v²/(r R) at that speed
+        return abs(spin_inertia) / (g.r * g.R) * speed ** 2
+
     return {"a": {k: value for k, value in wrong.items() if value is not None},
+            "b": {"motors_ignored": couple(2 * g.I_a),
+                  ("gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds"):
+                      couple(2 * g.I_a - s * 2 * ratio * g.I_m)},
             "c": {"precession_reversed": other(v, "c")}}
 
 

@@ -201,6 +201,9 @@ def rail_car_limiting_speed(p, d):
               gy.rail_limiting_speed(p.m, p.x, per_v2 + gy.gyroscopic_couple_per_v2(2 * p.I_a, p.r, p.R)))
     d.step("C_g", abs(per_v2_g) * v ** 2, "N*m", symbol=r"C_g", formula=r"\left|@k_g\right|\,@v_max^2",
            note="the size of the gyroscopic couple at the limiting speed")
+    d.mistake("C_g", "motors_ignored", abs(gy.gyroscopic_couple_per_v2(2 * p.I_a, p.r, p.R)) * v ** 2)
+    d.mistake("C_g", "gyro_added_where_it_relieves" if s < 0 else "gyro_subtracted_where_it_adds",
+              abs(gy.gyroscopic_couple_per_v2(2 * p.I_a - s * 2 * p.G * p.I_m, p.r, p.R)) * v ** 2)
     effect = "adds" if per_v2_g > 0 else "relieves"
     d.step("gyro_effect", effect, "", symbol=r"\text{gyroscopic couple}",
            note="it " + ("overturns outwards with the centrifugal couple" if per_v2_g > 0
