@@ -59,7 +59,8 @@ def belt_power(v):
     answers = {"a": theta, "b": speed, "c": p_light, "d": p_heavy, "e": p_elastic,
                "f": torque * g.d1 / 2, "g": torque * g.d2 / 2}
     degrees = min(g.mu * math.degrees(theta) / wedge, 700)
-    light = {"theta_in_degrees": (t1 - slack(degrees, t1)) * speed}
+    light = {"theta_in_degrees": (t1 - slack(degrees, t1)) * speed,
+             "larger_pulley": (t1 - slack(g.mu * large / wedge, t1)) * speed}   # the larger pulley's wrap
     if vee:
         light["flat_formula_on_v_belt"] = (t1 - slack(g.mu * theta, t1)) * speed
         light["full_groove_angle"] = (t1 - slack(g.mu * theta / math.sin(g.groove), t1)) * speed

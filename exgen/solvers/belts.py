@@ -72,6 +72,10 @@ def belt_power(p, d):
     p_light = d.step("P_light", mb.power(t1, t2_light, v), "W", symbol=r"P",
                      formula=r"(@T1 - @T2_light)\,@v")
     d.mistake("P_light", "theta_in_degrees", mb.power(t1, t1 / degree_ratio, v))
+    # the larger pulley's wrap in the friction ratio: the smaller pulley slips first and governs (in a
+    # V-groove the ratio is so large that the wrap hardly shows: named only where it does)
+    d.mistake("P_light", "larger_pulley", mb.power(t1, t1 / mb.tension_ratio(p.mu, d.value_of("theta_large"), beta), v),
+              if_apart=beta is not None)
     if beta is not None:
         d.mistake("P_light", "flat_formula_on_v_belt", mb.power(t1, t1 / flat_ratio, v))
         d.mistake("P_light", "full_groove_angle", mb.power(t1, t1 / mb.tension_ratio(p.mu, theta, 2 * beta), v))
