@@ -59,7 +59,8 @@ def static_balance(v):
     scalar = sum(mr for mr, _ in masses)
     answers = {"a": balance, "b": balance[0] / g.b}
     mistakes = {"a": {"scalar_sum": (scalar, balance[1]), "resultant_not_balance": turned(balance)},
-                "b": {"scalar_sum": scalar / g.b}}
+                "b": {"scalar_sum": scalar / g.b,
+                      "eccentricity_ignored": abs(g.m1 + g.m2 * e(g.theta2) + g.m3 * e(g.theta3))}}  # m, not m·r
     return answers, mistakes
 
 

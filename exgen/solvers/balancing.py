@@ -45,6 +45,8 @@ def static_balance(p, d):
     d.mistake("Bb", "scalar_sum", sum(m * r for m, r, _ in masses))
     d.step("B", size / p.b, "kg", formula=r"\frac{@Bb}{@b}", note="the balancing mass at the radius given")
     d.mistake("B", "scalar_sum", sum(m * r for m, r, _ in masses) / p.b)
+    # the masses balanced as though all at one radius: the polygon of m, not of m·r
+    d.mistake("B", "eccentricity_ignored", abs(sum(m * complex(math.cos(a), math.sin(a)) for m, _, a in masses)))
     d.mistake("theta_b", "resultant_not_balance", angle + PI)
 
 
