@@ -59,6 +59,34 @@ def static_balance_of_masses(v):
                      + g.m3 * complex(math.cos(g.theta3), math.sin(g.theta3)))}
 
 
+def lift_motor_acceleration_times_n(v):
+    """The accelerating torque with the drum's angular acceleration multiplied by n = ω_D/ω_M, not divided."""
+    g = printed(v, "eta", "a", "dD", "t1", "t2", "t3", "t4", "I_M", "I_T", "I_D")
+    n1 = g.t1 / g.t2
+    n = n1 * g.t3 / g.t4
+    inertia = g.I_M + g.I_T * n1 ** 2 / g.eta + g.I_D * n ** 2 / g.eta ** 2
+    return {"c": inertia * g.a / (g.dD / 2) * n}
+
+
+def coupler_angle_at_b(v):
+    g = printed(v, "L3", "CP", "BP")
+    return {"c": math.acos((g.BP ** 2 + g.L3 ** 2 - g.CP ** 2) / (2 * g.BP * g.L3))}
+
+
+def belt_power_with_larger_wrap(v):
+    g = printed(v, "d1", "d2", "X", "N1", "mu", "A", "sigma")
+    wrap = math.pi + 2 * math.asin(abs(g.d2 - g.d1) / (2 * g.X))   # the larger pulley's angle of contact
+    tight = g.sigma * g.A
+    return {"c": tight * (1 - math.exp(-g.mu * wrap)) * g.N1 * g.d1 / 2}
+
+
+def rail_car_axles_alone(v):
+    """The resultant gyroscopic couple at the limiting speed with the motors left out: 2 I_a v²/(r R)."""
+    g = printed(v, "I_a", "r", "R")
+    speed = v.answers["a"].value / 3.6                              # (b) is worked from (a)'s speed
+    return {"b": 2 * g.I_a * speed ** 2 / (g.r * g.R)}
+
+
 SLIPS = [
     ("gyroscopes.rotor_bearing_reactions", "gyro_ignored", rotor_static_reactions),
     ("vibration.simple_pendulum", "sqrt_missing", pendulum_without_root),
@@ -68,6 +96,10 @@ SLIPS = [
     ("gyroscopes.ship_turbine", "rpm_as_rad_s", pitching_couple_in_rpm),
     ("vibration.stepped_shaft", "k_not_squared", flywheel_k_not_squared),
     ("balancing.static_balance", "eccentricity_ignored", static_balance_of_masses),
+    ("gears.lift_counterweight", "ratio_inverted", lift_motor_acceleration_times_n),
+    ("linkages.coupler_point", "wrong_vertex", coupler_angle_at_b),
+    ("belts.flat_belt_power", "larger_pulley", belt_power_with_larger_wrap),
+    ("gyroscopes.rail_car_limiting_speed", "motors_ignored", rail_car_axles_alone),
 ]
 
 
