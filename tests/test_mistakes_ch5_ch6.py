@@ -29,4 +29,5 @@ def test_reversed_spring_feedback_holds_for_a_flywheel_turning_against_the_wheel
     wrong = "left" if variant.answers["f"].value == "right" else "right"
     result = grade(variant, "f", wrong)
     assert result.mistake == "precession_reversed"
-    assert "opposite" in result.message and "to its right" in result.message
+    assert "turns against the road wheels" in result.message  # written from this sheet's flywheel
+    assert f"its spin vector points {variant.step('spin_vector').value}" in result.message

@@ -115,23 +115,19 @@ def named_in(text: str, words: tuple[DrawWord, ...]) -> list[tuple[DrawWord, ...
     return [owners for _, _, owners in spans(tokens(text), words)]
 
 
-def part_texts(part: PartSpec) -> list[tuple[str, str]]:
-    """(where, text) of every text a part shows beside a variant: each named mistake's feedback (its `say:`
-    or the name's default text) and each hint."""
-    texts = [(f"mistake {m.when!r}" + ("" if m.say else " (its default text)"), message_for(m.when, m.say))
+def part_texts(part: PartSpec) -> list[tuple[str, str, str]]:
+    """(where, text, mistake) of every text a part shows beside a variant: each named mistake's feedback (its
+    `say:` or the name's default text, with the mistake's name) and each hint (with none)."""
+    texts = [(f"mistake {m.when!r}" + ("" if m.say else " (its default text)"), message_for(m.when, m.say), m.when)
              for m in part.mistakes]
-    return texts + [(f"hint {i}", hint) for i, hint in enumerate(part.hints, 1)]
+    return texts + [(f"hint {i}", hint, "") for i, hint in enumerate(part.hints, 1)]
 
 
-def shown_texts(variant) -> list[tuple[str, str, str]]:
-    """(part id, where, text) of every text of the template a student can be shown beside this variant: the
-    feedback of each mistake a part names that the variant records, and each hint."""
-    out = []
-    for part in variant.template.parts:
-        recorded = variant.mistakes.get(part.id, {})
-        out += [(part.id, where, text) for where, text in part_texts(part)
-                if not where.startswith("mistake") or where.split("'")[1] in recorded]
-    return out
+def shown_texts(variant) -> list[tuple[str, str, str, str]]:
+    """(part id, where, text, mistake) of every text of the template a student can be shown beside this
+    variant: the feedback of each mistake a part names that the variant records, and each hint."""
+    return [(part.id, where, text, mistake) for part in variant.template.parts
+            for where, text, mistake in part_texts(part) if not mistake or mistake in variant.mistakes[part.id]]
 
 
 def misstatements(variant) -> list[str]:
@@ -143,15 +139,17 @@ def misstatements(variant) -> list[str]:
     words = draw_words(variant.template)
     params_only = tuple(w for w in words if w.param)
     problems = []
-    for part_id, where, text in shown_texts(variant):
+    import jinja2
+
+    for part_id, where, text, mistake in shown_texts(variant):
         try:
             variant.fill(text)
             fixed = fixed_parts(text)
-        except Exception as exc:  # noqa: BLE001  (a text's error is the template's, named with it)
+        except (ValueError, jinja2.TemplateError) as exc:  # a text's error is the template's, named with it
             problems.append(f"part {part_id}, {where}: cannot be written: {exc}")
             continue
         for run in fixed:
-            named = named_in(run, words if where.startswith("mistake") else params_only)
+            named = named_in(run, words if mistake else params_only)
             wrong = disagreeing(named, variant)
             if wrong:
                 said = described(wrong, variant)
