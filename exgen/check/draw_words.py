@@ -38,8 +38,19 @@ class DrawWord:
         return " ".join(self.words)
 
 
+#: draw_words by template (kept with it, so that its id names it while cached): validate asks once a variant.
+_WORDS: dict[int, tuple[Template, tuple]] = {}
+
+
 def draw_words(template: Template) -> tuple[DrawWord, ...]:
     """Every run of words that names a value the template's draw decides, longest first."""
+    cached = _WORDS.get(id(template))
+    if cached is None or cached[0] is not template:
+        cached = _WORDS[id(template)] = (template, _draw_words(template))
+    return cached[1]
+
+
+def _draw_words(template: Template) -> tuple[DrawWord, ...]:
     found: list[DrawWord] = []
     for spec in template.params:  # one that only chooses what the figure draws is stated by no text
         if spec.given and spec.choices and all(isinstance(c, str) for c in spec.choices):
@@ -59,7 +70,7 @@ def _names_on_every_sheet(template: Template) -> list[str]:
     runs = []
     for text in [template.statement] + [p.ask for p in template.parts]:
         try:
-            runs += fixed_parts(text)
+            runs += list(fixed_parts(text))
         except ValueError:
             continue
     return [w for run in runs for w in tokens(run) + ["|"]]

@@ -52,7 +52,8 @@ def render_text(text: str, context: dict) -> str:
     return _compile(text).render(context).strip()
 
 
-def fixed_parts(text: str) -> list[str]:
+@lru_cache(maxsize=4096)
+def fixed_parts(text: str) -> tuple[str, ...]:
     """The words a text prints in every draw: its literal runs outside any `{% if %}` or `{% for %}`
     (what `{{ }}` prints, and what a branch prints, are written from the variant). Raises ValueError
     on a Jinja syntax error."""
@@ -63,5 +64,5 @@ def fixed_parts(text: str) -> list[str]:
         tree = environment().parse(text)
     except jinja2.TemplateSyntaxError as exc:
         raise ValueError(f"template syntax error on line {exc.lineno}: {exc.message}") from exc
-    return [node.data for output in tree.body if isinstance(output, nodes.Output)
-            for node in output.nodes if isinstance(node, nodes.TemplateData)]
+    return tuple(node.data for output in tree.body if isinstance(output, nodes.Output)
+                 for node in output.nodes if isinstance(node, nodes.TemplateData))
