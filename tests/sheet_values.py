@@ -17,7 +17,7 @@ from exgen.solve.variant import make_variant
 #: SI value of one of each unit a template gives or asks in.
 TO_SI = {
     "": 1.0, "m": 1.0, "cm": 1e-2, "mm": 1e-3, "in": 0.0254, "mm^2": 1e-6, "kg": 1.0, "t": 1e3, "s": 1.0,
-    "N": 1.0, "N*m": 1.0, "kN*m": 1e3, "J": 1.0, "kJ": 1e3, "W": 1.0, "kW": 1e3, "N/m": 1.0, "kN/m": 1e3,
+    "N": 1.0, "kN": 1e3, "N*m": 1.0, "kN*m": 1e3, "J": 1.0, "kJ": 1e3, "W": 1.0, "kW": 1e3, "N/m": 1.0, "kN/m": 1e3,
     "N/mm": 1e3, "N*s/m": 1.0, "N*m*s": 1.0, "MPa": 1e6, "MN/m^2": 1e6, "GN/m^2": 1e9, "kg/m^3": 1.0, "kg*m^2": 1.0,
     "kg*mm": 1e-3, "kg*mm*m": 1e-3, "m/s": 1.0, "m/min": 1 / 60, "km/h": 1 / 3.6, "m/s^2": 1.0, "rad/s": 1.0, "rad/s^2": 1.0,
     "rpm": 2 * math.pi / 60, "Hz": 1.0, "deg": math.pi / 180, "percent": 1e-2, "teeth/in": 1 / 0.0254,

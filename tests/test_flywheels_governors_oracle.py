@@ -156,7 +156,8 @@ def energy_coefficient(v):
     revolutions = {"one revolution": 1, "two revolutions": 2}[p["cycle"]]
     work = p["P"] * revolutions * 2 * math.pi / p["N"]
     energy = p["Ce"] * work
-    return {"a": work, "b": energy, "c": energy / (p["N"] ** 2 * 2 * p["band"]) / p["k"] ** 2}
+    mass = energy / (p["N"] ** 2 * 2 * p["band"]) / p["k"] ** 2
+    return {"a": work, "b": energy, "c": mass, "d": mass * G}
 
 
 # ---- chapter 4 --------------------------------------------------------------------------------------

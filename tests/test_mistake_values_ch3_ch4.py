@@ -107,7 +107,8 @@ def energy_coefficient(v):
     if g.cycle.startswith("two"):
         work["one_revolution"] = a["a"] / 2
     return {"a": work, "c": {"plus_minus_read_as_total": 2 * a["c"], "rpm_as_rad_s": a["c"] * RPM ** 2,
-                             "k_not_squared": a["c"] * g.k}}
+                             "k_not_squared": a["c"] * g.k},
+            "d": {"mass_for_weight": a["c"]}}     # the kilograms given as newtons
 
 
 # ---- chapter 4 ------------------------------------------------------------------------------------------

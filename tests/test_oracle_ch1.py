@@ -110,12 +110,15 @@ def v_belt_count(v):
     each, wrapped = per_belt(theta), per_belt(theta * (1 + g.idler))
     change = wrapped / each - 1
     trend = "increase" if change > 0 else "decrease"
-    answers = {"a": count(each), "b": trend, "c": change}
+    slack = tc + (t1 - tc) * math.exp(-g.mu * theta / wedge)     # (T1 - Tc)/(T2 - Tc) = e^(mu theta / sin beta)
+    answers = {"a": count(each), "b": trend, "c": change, "d": slack}
     flat = (1 - math.exp(-g.mu * theta * (1 + g.idler))) / (1 - math.exp(-g.mu * theta)) - 1
     mistakes = {"a": {"rounded_down": math.floor(g.P / each), "centrifugal_ignored": count(per_belt(theta, tension=t1)),
                       "flat_formula_on_v_belt": count(per_belt(theta, sine=1.0))},
                 "b": {"opposite": "decrease" if trend == "increase" else "increase"},
-                "c": {"ratio_inverted": each / wrapped - 1, "flat_formula_on_v_belt": flat}}
+                "c": {"ratio_inverted": each / wrapped - 1, "flat_formula_on_v_belt": flat},
+                "d": {"centrifugal_ignored": t1 * math.exp(-g.mu * theta / wedge),
+                      "flat_formula_on_v_belt": tc + (t1 - tc) * math.exp(-g.mu * theta)}}
     return answers, mistakes
 
 

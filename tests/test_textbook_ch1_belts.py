@@ -115,6 +115,8 @@ def test_problem_1_3_number_of_v_belts(bank):
     idler = (1 - math.exp(-0.3 * 1.1 * theta / 0.5)) / (1 - math.exp(-0.3 * theta / 0.5)) - 1
     assert got["b"] == "increase"
     assert got["c"] == pytest.approx(100 * idler) and round(got["c"], 2) == 3.72
+    # the slack side: (T1 - Tc)/(T2 - Tc) = e^(mu theta / sin beta), so T2 = 68.54 + 1231.5/4.994
+    assert got["d"] == pytest.approx(tc + (t1 - tc) * math.exp(-0.3 * theta / 0.5)) and round(got["d"], 1) == 315.1
 
 
 def test_problem_1_4_countershaft_speed(bank):

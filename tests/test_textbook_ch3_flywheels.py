@@ -126,6 +126,8 @@ def test_problem_3_4_energy_coefficient(bank):
     assert got["b"] == pytest.approx(18.3)
     mass = 0.1 * work / ((100 * W) ** 2 * 0.01) / 2 ** 2
     assert got["c"] == pytest.approx(mass) and round(got["c"], 1) == 4171.9
+    # the problem asks the weight: m g = 4171.9 x 9.81 N
+    assert got["d"] == pytest.approx(mass * 9.81 / 1000) and round(got["d"], 2) == 40.93
 
 
 def test_problem_3_5_fluctuating_resistance(bank):

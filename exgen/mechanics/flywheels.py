@@ -18,6 +18,9 @@ from __future__ import annotations
 import math
 from typing import Sequence
 
+#: Standard gravity, m/s², as the text takes it.
+G = 9.81
+
 #: Below this fraction of the largest loop, a cumulative energy is taken as exactly zero.
 ZERO = 1e-12
 
@@ -127,6 +130,11 @@ def speed_after(omega1: float, energy_given: float, inertia: float) -> float:
 def kinetic_energy(inertia: float, omega_: float) -> float:
     """½ I ω²."""
     return 0.5 * inertia * omega_ ** 2
+
+
+def weight(mass: float) -> float:
+    """The weight m g of a flywheel, in N (Problem 3.4 asks the weight, not the mass)."""
+    return mass * G
 
 
 def work_per_cycle(power: float, mean_omega: float, cycle_angle: float = 2.0 * math.pi) -> float:

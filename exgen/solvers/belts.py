@@ -231,8 +231,12 @@ def v_belt_count(p, d):
     d.require(tc < t_max / 3, "belt above its maximum-power speed")
     ratio = d.step("ratio", mb.tension_ratio(p.mu, theta, beta), "", symbol="R",
                    formula=r"e^{@mu\,@theta / \sin @beta}", note="the tension ratio $(T_1 - T_c)/(T_2 - T_c)$")
-    per_belt = d.step("P_belt", (t_max - tc) * (1 - 1 / ratio) * v, "W", symbol=r"P_{\mathrm{belt}}",
-                      formula=r"(@T1 - @Tc)\left(1 - \frac{1}{@ratio}\right)\,@v")
+    slack = d.step("T2", mb.slack_tension(t_max, ratio, tc), "N", symbol=r"T_2",
+                   formula=r"@Tc + \frac{@T1 - @Tc}{@ratio}", note="the slack side of each belt")
+    d.mistake("T2", "centrifugal_ignored", t_max / ratio)
+    d.mistake("T2", "flat_formula_on_v_belt", mb.slack_tension(t_max, mb.tension_ratio(p.mu, theta), tc))
+    per_belt = d.step("P_belt", (t_max - slack) * v, "W", symbol=r"P_{\mathrm{belt}}",
+                      formula=r"(@T1 - @T2)\,@v")
     exact = d.step("n_exact", p.P / per_belt, "", symbol=r"\frac{P}{P_{\mathrm{belt}}}",
                    formula=r"\frac{@P}{@P_belt}", note="belts needed, before rounding")
     count = d.step("n_belts", mb.belts_needed(p.P, per_belt), "", symbol="n",

@@ -141,7 +141,11 @@ def energy_coefficient(p, d):
                      note="the coefficient of fluctuation of energy is ΔE over the work per cycle")
     cs = _band(p, d)
     inertia = d.step("I", fw.inertia_for(delta_e, w, cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}")
-    d.step("m", fw.rim_mass(inertia, p.k), "kg", formula=r"\frac{@I}{@k^2}")
+    mass = d.step("m", fw.rim_mass(inertia, p.k), "kg", formula=r"\frac{@I}{@k^2}")
     d.mistake("m", "plus_minus_read_as_total", delta_e / (w ** 2 * p.band) / p.k ** 2)
     d.mistake("m", "rpm_as_rad_s", delta_e / ((w / RPM) ** 2 * cs) / p.k ** 2)
     d.mistake("m", "k_not_squared", inertia / p.k, if_apart=True)  # k = 1 m: k and k² agree
+    d.constant("g", fw.G, "m/s^2", note="standard gravity")
+    d.step("weight", fw.weight(mass), "N", symbol=r"W_{\mathrm{f}}", formula=r"@m\,@g",
+           note="the problem asks the weight: the mass times g")
+    d.mistake("weight", "mass_for_weight", mass)
