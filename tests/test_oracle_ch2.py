@@ -298,13 +298,17 @@ def inline_primary_balance(v):
     masses = [(g.m_out, 0.0), (b[0], b[1]), (c[0], c[1]), (g.m_out, g.phi)]
     secondary = closing(sum(m * per_mass * e(2 * t) for m, t in masses))
     n = g.l / g.r
-    answers = {"a": c, "b": b, "c": secondary}
+    resultant = sum(m * per_mass * e(2 * t) for m, t in masses)
+    # the force along the stroke at crank angle x is Re(resultant e^(2jx)): largest first where 2x + arg = k pi
+    peak = ((-cmath.phase(resultant)) % PI) / 2
+    answers = {"a": c, "b": b, "c": secondary, "d": peak}
     mistakes = {"a": {"sign_lost": c_lost, "resultant_not_balance": turned(c)},
                 "b": {"sign_lost": b_lost, "resultant_not_balance": turned(b)},
                 "c": {"secondary_not_doubled": closing(clean(sum(m * per_mass * e(t) for m, t in masses),
                                                              sum(m * per_mass for m, _ in masses))),
                       "n_inverted": sized(secondary, n * n), "rpm_as_rad_s": sized(secondary, (1 / RPM) ** 2),
-                      "resultant_direction": turned(secondary)}}
+                      "resultant_direction": turned(secondary)},
+                "d": {"secondary_not_halved": 2 * peak}}
     return answers, mistakes
 
 

@@ -253,6 +253,11 @@ def test_problem_2_1_primary_balance_by_inner_cranks(bank):
     # (b) "the direction and the maximum secondary unbalanced force": asked, like every engine sheet, as the
     # angle at which a balancing force must act, half a turn from the resultant
     assert polar_is(got["c"], math.hypot(sx, sy), (math.degrees(math.atan2(sy, sx)) + 180) % 360)
+    # (b)'s direction read as where the crank stands when the secondary force peaks: the force along the
+    # stroke, summed over the cylinders at crank angles theta + theta_i, is largest first at 31.43 deg
+    cranks = [(5, 0.0), (math.hypot(fx, fy), theta_b), (m_c, theta_c), (5, math.radians(120))]
+    along = [abs(sum(m * k * math.cos(2 * (math.radians(t / 100) + a)) for m, a in cranks)) for t in range(9000)]
+    assert got["d"] == pytest.approx(along.index(max(along)) / 100, abs=0.01) and round(got["d"], 2) == 31.43
 
 
 PROBLEM_2_2 = dict(mB="18 kg", mC="12.5 kg", rBC="60 mm", rAD="80 mm", thetaC="100 deg", lAB="100 mm", lBC="200 mm")

@@ -66,6 +66,17 @@ def inline_unbalance(mass: float, radius: float, n: float, omega: float, angles:
     return force, couple
 
 
+def peak_crank_angle(resultant_angle: float, harmonic: int = 2) -> float:
+    """The first crank angle after the reference crank's inner dead centre at which a harmonic's
+    unbalanced force along the line of stroke is largest in size.
+
+    With the resultant of the k-th harmonic at ψ in its polygon (cranks drawn at kθ), the force along
+    the line of stroke is F cos(kθ + ψ): largest, one way or the other, when kθ + ψ is a whole number
+    of half turns, so θ = ((−ψ) mod 180°)/k, in [0, 180°/k).
+    """
+    return ((-resultant_angle) % math.pi) / harmonic
+
+
 def radial_cranks(cylinder_angles: Sequence[float]) -> dict[str, tuple[float, float]]:
     """Resultants of the unit direct and reverse cranks, primary and secondary, as
     (size in cranks, angle) with the crank on the reference line: |Σ ∠φᵢ| for each set."""

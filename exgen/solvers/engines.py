@@ -237,6 +237,20 @@ def inline_primary_balance(p, d):
     d.require(secondary >= 0.1 * (2 * p.m_out + m_b + m_c) * k, "secondary forces nearly balance: no direction to ask")
     theta_s = closing_angle(d, "theta_Fs", r"\theta_{F_{\mathrm{s}}}", "Fs_0", "Fs_90")
     _primary_balance_slips(p, d, (m_c, theta_c), (m_b, theta_b), (secondary, theta_s), n)
+    _secondary_peak(d, theta_s)
+
+
+def _secondary_peak(d, balancing_angle: float) -> None:
+    """The crank angle at which the secondary force peaks: its resultant stands half a turn from the
+    balancing direction, at ψ in the 2θ polygon, and the force along the stroke is F_s cos(2θ + ψ)."""
+    resultant = balancing_angle - PI
+    peak = me.peak_crank_angle(resultant)
+    turns = round((2 * peak + balancing_angle - PI) / PI)     # the half turns 2θ + ψ makes: 0 or 1
+    d.step("theta_peak", peak, "rad", symbol=r"\theta_{\max}",
+           formula=rf"\frac{{{180 * (turns + 1)}^\circ - @theta_Fs}}{{2}}",
+           note=r"crank A's angle from its inner dead centre: the force along the stroke is $F_{\mathrm{s}} \cos(2\theta + \psi)$, "
+                r"largest when $2\theta + \psi$ is a whole number of half turns, $\psi$ the resultant's direction")
+    d.mistake("theta_peak", "secondary_not_halved", 2 * peak, if_apart=True)
 
 
 def _primary_balance_slips(p, d, right_c, right_b, right_s, n):
