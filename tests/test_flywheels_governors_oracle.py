@@ -240,7 +240,10 @@ def proell_speeds(v):
     turned = math.asin((p["r2"] - el) / l) - math.asin((p["r1"] - el) / l)   # the lower arm's turn
     w1, _ = governor_speed(p["m"], p["M"] * G, l, eu, el, p["r1"], p["e"], 0.0)
     w2, ball = governor_speed(p["m"], p["M"] * G, l, eu, el, p["r2"], p["e"], turned)
-    return {"a": w1, "b": w2, "c": ball}
+    joint = p["r2"]                     # the ball at r2 instead: the joint by fixed-point iteration
+    for _ in range(200):
+        joint = p["r2"] - p["e"] * math.sin(math.asin((joint - el) / l) - math.asin((p["r1"] - el) / l))
+    return {"a": w1, "b": w2, "c": ball, "d": joint}
 
 
 def hartnell_spring(v):

@@ -196,3 +196,18 @@ def test_problem_4_6_spring_controlled():
 
 def test_sensitivity_is_the_texts():
     assert gv.sensitivity(100, 102, 98) == pytest.approx(25)     # ω/(ω₁ − ω₂), not its inverse
+
+
+@pytest.mark.parametrize("ball", [0.18, 0.2, 0.215, 0.23])
+def test_joint_radius_for_ball_puts_the_ball_where_asked(ball):
+    # Problem 4.3's linkage: the extension upright at a joint radius of 170 mm, 100 mm long
+    linkage = gv.Linkage(0.3, 0.3, 0.0, 0.04)
+    joint = gv.joint_radius_for_ball(linkage, 0.1, 0.17, ball)
+    turned = gv.pose(linkage, joint).beta - gv.pose(linkage, 0.17).beta
+    assert gv.lever_arms(linkage, gv.pose(linkage, joint), 0.1, turned).ball_radius == pytest.approx(ball, abs=1e-12)
+    assert 0.17 < joint < ball
+
+
+def test_joint_radius_for_ball_refuses_a_ball_inside_the_upright_joint():
+    with pytest.raises(ValueError):
+        gv.joint_radius_for_ball(gv.Linkage(0.3, 0.3, 0.0, 0.04), 0.1, 0.17, 0.16)

@@ -209,7 +209,7 @@ def proell_speeds(v):
 
     upright = governor_speed(g.m, g.M * G, g.l, g.e_u, g.e_l, g.r2, g.e, 0.0)[0]
     return {"a": {"porter_formula": porter(g.r1)}, "b": {"extension_kept_vertical": upright, "porter_formula": porter(g.r2)},
-            "c": {"extension_kept_vertical": g.r2}}
+            "c": {"extension_kept_vertical": g.r2}, "d": {"extension_kept_vertical": g.r2}}
 
 
 def hartnell_spring(v):

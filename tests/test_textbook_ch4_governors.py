@@ -97,6 +97,13 @@ def test_problem_4_3_proell(bank):
     assert got["a"] == pytest.approx(w1 / W) and round(got["a"], 1) == 143.5
     assert got["b"] == pytest.approx(w2 / W) and round(got["b"], 1) == 147.5
     assert got["c"] == pytest.approx(b2 * 1000) and round(got["c"], 1) == 232.4
+    # "the maximum radius of the governor" read as the balls' radius: the joint r with
+    # r + 0.1 sin(beta(r) - beta1) = 0.215 m, by fixed-point iteration from the ball's radius
+    joint = 0.215
+    for _ in range(100):
+        joint = 0.215 - 0.1 * math.sin(math.asin((joint - 0.04) / 0.3) - beta1)
+    assert speed(joint)[1] == pytest.approx(0.215)
+    assert got["d"] == pytest.approx(joint * 1000) and round(got["d"], 1) == 202.6
 
 
 def test_problem_4_4_porter_friction_from_rising_speed(bank):

@@ -89,6 +89,29 @@ def pose_at_depth(linkage: Linkage, depth: float) -> Pose:
     return pose(linkage, 0.5 * (low + high))
 
 
+def joint_radius_for_ball(linkage: Linkage, extension: float, upright_radius: float, ball_radius: float) -> float:
+    """The joint radius r at which a Proell ball, on an extension fixed to the lower arm and upright
+    when the joint was at `upright_radius`, turns at `ball_radius`: r + e sin(β(r) − β(r₀)) = r_b,
+    found by bisection (the ball's radius grows steadily with the joint's)."""
+    upright = pose(linkage, upright_radius).beta
+
+    def ball(r: float) -> float:
+        return r + extension * math.sin(pose(linkage, r).beta - upright)
+
+    low, high = upright_radius, min(ball_radius, linkage.radius_range[1] * (1 - 1e-12))
+    if not ball(low) <= ball_radius <= ball(high):
+        raise ValueError(f"no joint radius puts the ball at {ball_radius:g} m")
+    for _ in range(200):
+        mid = 0.5 * (low + high)
+        if mid in (low, high):
+            break
+        if ball(mid) < ball_radius:
+            low = mid
+        else:
+            high = mid
+    return 0.5 * (low + high)
+
+
 @dataclass(frozen=True)
 class LeverArms:
     """Distances for moments about I: ball X, point Z below it on the sleeve-pivot line, sleeve pivot Y."""

@@ -288,3 +288,20 @@ def proell_speeds(p, d):
     for tag, r in (("1", p.r1), ("2", p.r2)):
         porter = gv.lever_arms(linkage, gv.pose(linkage, r))
         d.mistake(f"omega_{tag}", "porter_formula", gv.equilibrium_speed(p.m, load, porter))
+    _joint_for_ball(p, d, linkage)
+
+
+def _joint_for_ball(p, d, linkage: gv.Linkage) -> None:
+    """The other reading of "the governor's radius": the ball, not the joint, at r₂; the joint then lies
+    nearer the axis by e sin(β − β₁), β the lower arm's angle there, found by trial."""
+    joint = gv.joint_radius_for_ball(linkage, p.e, p.r1, p.r2)
+    d.require(gv.pose(linkage, joint).beta - gv.pose(linkage, p.r1).beta >= math.radians(4),
+              "the joint hardly moves from where the ball is")
+    d.step("r_j", joint, "m", symbol=r"r_2'",
+           note=r"the joint's radius when the ball is at $r_2$, found by trial: the radius $r$ for which "
+                r"$r + e \sin(eta - eta_1) = r_2$, with $\sineta = (r - e_l)/l$")
+    d.step("beta_j", gv.pose(linkage, joint).beta, "rad", symbol=r"eta_2'", formula=r"\sin^{-1}rac{@r_j - @e_l}{@l}")
+    d.step("x_j", joint + p.e * math.sin(d.value_of("beta_j") - d.value_of("beta_1")), "m", symbol=r"r_b'",
+           formula=r"@r_j + @e\sin(@beta_j - @beta_1)", note=r"the check: the ball is at $r_2$")
+    d.mistake("r_j", "extension_kept_vertical", p.r2)
+
