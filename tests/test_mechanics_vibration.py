@@ -125,3 +125,16 @@ def test_simple_and_compound_pendulum():
 
 def test_torsional_stiffness_of_a_round_shaft():
     assert vb.torsional_stiffness(80e9, 0.05, 1.0) == pytest.approx(80e9 * math.pi * 0.05 ** 4 / 32)
+
+
+@pytest.mark.parametrize("zeta, case", [(0.0, "light"), (0.5, "light"), (0.999, "light"), (1.0, "critical"),
+                                        (1.001, "heavy"), (2.5, "heavy")])
+def test_the_three_cases_of_damping_follow_from_zeta_alone(zeta, case):
+    # §6.6.3: light below 1 (it oscillates), critical at 1, heavy above (it creeps back)
+    assert vb.damping_case(zeta) == case
+
+
+def test_a_dashpot_on_an_arm_resists_rotation_with_c_a_squared():
+    # force C a θ̇ at arm a: torque C a² θ̇; eq. 6.47 referred to b = a gives C itself
+    assert vb.torsional_damping(2000.0, 0.25) == pytest.approx(2000.0 * 0.0625)
+    assert vb.torsional_damping(2000.0, 0.25) == pytest.approx(vb.referred(2000.0, 0.25, 1.0))

@@ -247,6 +247,30 @@ def damped_pendulum_lever(v):
     return answers, mistakes
 
 
+def damped_shaft_disc(v):
+    g = printed(v, "m", "D", "d", "l", "G", "a", "C")
+    inertia = g.m * g.D ** 2 / 8
+    q = g.G * math.pi * g.d ** 4 / 32 / g.l
+    w = omega(q, inertia)
+    torque_per_rad_s = g.C * g.a * g.a                       # force C a θ̇ at arm a
+    critical = 2 * inertia * w
+    zeta = torque_per_rad_s / critical
+    case = "light" if zeta < 1 else "heavy"                  # never drawn at exactly 1
+    answers = {"a": q, "b": hz(w), "c": torque_per_rad_s, "d": zeta, "e": case,
+               "f": hz(w * math.sqrt(1 - zeta ** 2)) if zeta < 1 else 0.0, "g": critical / g.a ** 2}
+    mistakes = {"a": {"bending_for_polar": g.G * math.pi * g.d ** 4 / 64 / g.l},
+                "b": {"omega_for_f": w, "sqrt_missing": q / inertia / TWO_PI},
+                "c": {"arm_not_squared": g.C * g.a},
+                "d": {"factor_two_missing": 2 * zeta, "arm_not_squared": zeta / g.a},
+                "e": {"case_inverted": "heavy" if case == "light" else "light"},
+                "f": {"damping_ignored": hz(w)}, "g": {"arm_not_squared": critical / g.a}}
+    if zeta < 1:
+        mistakes["f"]["omega_for_f"] = w * math.sqrt(1 - zeta ** 2)
+    else:
+        mistakes["f"]["root_of_negative"] = hz(w * math.sqrt(zeta ** 2 - 1))
+    return answers, mistakes
+
+
 ORACLES = {
     "vibration.simple_pendulum": simple_pendulum, "vibration.compound_pendulum": compound_pendulum,
     "vibration.spring_mass": spring_mass, "vibration.torsional_shaft_disc": torsional_shaft_disc,
@@ -254,7 +278,7 @@ ORACLES = {
     "vibration.lever_equivalent": lever_equivalent, "vibration.beam_two_springs": beam_two_springs,
     "vibration.natural_frequency_formula": natural_frequency_formula,
     "vibration.damped_spring_mass": damped_spring_mass, "vibration.log_decrement": log_decrement,
-    "vibration.damped_pendulum_lever": damped_pendulum_lever,
+    "vibration.damped_pendulum_lever": damped_pendulum_lever, "vibration.damped_shaft_disc": damped_shaft_disc,
 }
 
 

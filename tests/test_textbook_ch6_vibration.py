@@ -147,3 +147,20 @@ def test_torsional_shaft_disc(bank):
     inertia, stiffness = 100 * 0.3 ** 2 / 2, 80e9 * math.pi * 0.04 ** 4 / 32
     assert got["a"] == pytest.approx(inertia) and got["b"] == pytest.approx(stiffness / 1e3)
     assert got["c"] == pytest.approx(math.sqrt(stiffness / inertia) / (2 * math.pi))
+
+
+@pytest.mark.parametrize("C, case", [("4000 N*s/m", "light"), ("30000 N*s/m", "heavy")])
+def test_section_6_6_damped_shaft_and_disc_in_each_case(bank, C, case):
+    # §6.6.2-6.7 give the method without a worked example: a 110 kg disc 0.7 m across on a 35 mm shaft
+    # 0.6 m long (G = 80 GN/m²), a dashpot 0.225 m out. I = 110 × 0.35²/2, q = G π d⁴/(32 l),
+    # C_t = C a² (eq. 6.47), C_c = 2 I ω_n, ζ = C_t/C_c; only below ζ = 1 is there a damped frequency.
+    variant, got, warnings = solved(bank, "vibration.damped_shaft_disc", m="110 kg", D="0.7 m", d="35 mm", l="0.6 m",
+                                    G="80 GN/m^2", a="0.225 m", C=C)
+    inertia, q = 110 * 0.35 ** 2 / 2, 80e9 * math.pi * 0.035 ** 4 / 32 / 0.6
+    w = math.sqrt(q / inertia)
+    zeta = float(C.split()[0]) * 0.225 ** 2 / (2 * inertia * w)
+    assert got["a"] == pytest.approx(q / 1000) and got["b"] == pytest.approx(w / (2 * math.pi))
+    assert got["d"] == pytest.approx(zeta) and got["e"] == case
+    assert got["f"] == (pytest.approx(w * math.sqrt(1 - zeta ** 2) / (2 * math.pi)) if zeta < 1 else 0.0)
+    assert got["g"] == pytest.approx(2 * inertia * w / 0.225 ** 2)     # 14370 N s/m: the critical dashpot
+    assert round(got["g"], -1) == 14370 and warnings == []

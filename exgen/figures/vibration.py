@@ -238,3 +238,39 @@ def decay_plot(d: Drawing, origin, a1, ar, n: int, width: float = 280.0, height:
     y = y0 + height + 4
     d.dimension((first[0], y), (last[0], y))
     d.place([(((first[0] + last[0]) / 2, y + 16), "middle")], f"{n} cycle{'s' if n > 1 else ''}")
+
+
+def damped_shaft_disc(variant) -> str:
+    """The disc on its shaft from the side, and from the shaft's end with the dashpot on an arm at radius a,
+    acting along the tangent there."""
+    big_d, small_d, l, a = need(variant, "D"), need(variant, "d"), need(variant, "l"), need(variant, "a")
+    m, c = need(variant, "m"), need(variant, "C")
+    length = _scaled(l.si, 0.3, 1.5, 140, 260)
+    thick = _scaled(small_d.si, 0.02, 0.06, 8, 18)
+    disc = _scaled(big_d.si, 0.3, 0.8, 110, 180)
+    d = Drawing()
+    ground(d, (0, 0), (0, 1), disc * 0.9, side=1)
+    d.polygon([(0, -thick / 2), (length, -thick / 2), (length, thick / 2), (0, thick / 2)], fill="#ececec", width=LINE)
+    d.polygon([(length, -disc / 2), (length + 16, -disc / 2), (length + 16, disc / 2), (length, disc / 2)],
+              fill="#d8d8d8", width=LINE)
+    d.line((-6, 0), (length + 28, 0), THIN, dash="10 3 2 3", cls="axis")
+    dimension(d, (0, thick / 2), (length, thick / 2), l.label("l"), side=-1, offset=disc / 2 - thick / 2 + 14)
+    d.place([((length * 0.45, -thick / 2 - 10), "middle"), ((length * 0.3, -thick / 2 - 10), "middle")],
+            small_d.label("d"))
+    d.place([((length + 8, -disc / 2 - 10), "middle")], m.label("m"))
+    # the end view: the disc, the shaft's end at its centre, the arm to radius a and the dashpot on its tangent
+    centre = (length + 125 + disc / 2, 0.0)
+    d.circle(centre, disc / 2, LINE, fill="#d8d8d8")
+    d.circle(centre, thick / 2, THIN, fill="#ececec")
+    arm = disc / 2 * min(1.0, a.si / (big_d.si / 2))
+    point = (centre[0], centre[1] - arm)
+    d.line(centre, point, LINE, cls="arm")
+    d.circle(point, 3, THIN, fill="white")
+    dimension(d, centre, point, a.label("a"), side=1, offset=disc / 2 + 16)
+    far = (centre[0] + disc / 2 + 58, point[1])
+    dashpot(d, far, point)
+    ground(d, far, (0, 1), 40, side=1)
+    d.place([((far[0] + 14, point[1] + 5), "start"), ((far[0] + 14, point[1] - 26), "start")], c.label("C"))
+    dimension(d, (centre[0] - disc / 2, centre[1] + disc / 2), (centre[0] + disc / 2, centre[1] + disc / 2),
+              big_d.label("D"), side=-1, offset=14)
+    return d.svg("Disc on a shaft fixed at its far end, and its end view with a dashpot on an arm")

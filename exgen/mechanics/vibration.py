@@ -159,6 +159,19 @@ def damped_speed(omega_n: float, zeta: float) -> float:
     return omega_n * math.sqrt(1 - zeta ** 2)
 
 
+def damping_case(zeta: float) -> str:
+    """The text's three cases (§6.6.3): light (ζ < 1, it oscillates), critical (ζ = 1), heavy (ζ > 1)."""
+    if zeta < 0:
+        raise ValueError(f"a damping ratio of {zeta:g} is no damper")
+    return "light" if zeta < 1 else ("critical" if zeta == 1 else "heavy")
+
+
+def torsional_damping(damping: float, arm: float) -> float:
+    """A dashpot of coefficient C acting tangentially at radius a resists a rotation θ̇ with a force
+    C a θ̇ at arm a: a torque C a² θ̇, so the torsional coefficient is C a² (eq. 6.47's C(a/b)² times b²)."""
+    return damping * arm ** 2
+
+
 def decrement(first: float, last: float, cycles: float) -> float:
     """The logarithmic decrement per cycle, δ = ln(a₁/a_r) / (r − 1), with r − 1 = `cycles`."""
     return math.log(first / last) / cycles

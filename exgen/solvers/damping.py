@@ -3,7 +3,8 @@
 The logarithmic decrement follows the text's eq. 6.46: between the first amplitude a₁ and the r-th
 a_r lie r − 1 complete cycles, ln(a₁/a_r) = (r − 1)·2πζ/√(1 − ζ²). A sheet says "after n complete
 cycles", so r − 1 = n; dividing by n + 1 (taking r for the number of cycles) or by n − 1 (taking n for
-r) are the named slips. Every drawn system is under-damped, so it has a damped frequency to ask for.
+r) are the named slips. Those templates draw under-damped systems, which have a damped frequency to ask
+for; `damped_shaft_disc` draws all of the text's cases (§6.6.3) and asks which it is.
 """
 from __future__ import annotations
 
@@ -83,3 +84,52 @@ def log_decrement(p, d):
     d.step("T_d", vb.period(wd), "s", symbol=r"T_d", formula=r"\frac{2\pi}{@omega_d}", note="eq. 6.45")
     d.mistake("T_d", "omega_for_f", 1 / wd)
     d.require(c > 0, "no damping")
+
+
+def damped_shaft_disc(p, d):
+    """§6.6.2-6.7: a disc on a shaft with a dashpot on an arm: q, f_n, the torsional coefficient C a²,
+    ζ, the case of §6.6.3, the damped frequency where there is one, and the dashpot that damps critically."""
+    r = p.D / 2
+    inertia = d.step("I", p.m * r ** 2 / 2, "kg*m^2", formula=r"\frac{@m\,(@D/2)^2}{2}",
+                     note="a solid disc about its own axis, ½ m r²")
+    d.step("J", vb.polar_second_moment(p.d), "m^4", formula=r"\frac{\pi\,@d^4}{32}",
+           note="the shaft's polar second moment of area")
+    q = d.step("q", vb.torsional_stiffness(p.G, p.d, p.l), "N*m", symbol="q", formula=r"\frac{@G\,@J}{@l}",
+               note="torsional stiffness, torque per radian of twist")
+    d.mistake("q", "bending_for_polar", p.G * vb.second_moment(p.d) / p.l)
+    omega = d.step("omega_n", vb.natural_speed(q, inertia), "rad/s", symbol=r"\omega_n",
+                   formula=r"\sqrt{\frac{@q}{@I}}", note=r"from $I\ddot\theta + C_t\dot\theta + q\theta = 0$ (eq. 6.43) without the damper")
+    f_n = d.step("f_n", vb.frequency(omega), "Hz", symbol="f_n", formula=r"\frac{@omega_n}{2\pi}")
+    d.mistake("f_n", "omega_for_f", omega)
+    d.mistake("f_n", "sqrt_missing", q / inertia / (2 * math.pi))
+    d.require(2 <= f_n <= 100, "a torsional frequency outside 2-100 Hz")
+    c_t = d.step("C_t", vb.torsional_damping(p.C, p.a), "N*m*s", symbol="C_t", formula=r"@C\,@a^2",
+                 note=r"the dashpot's force $C a\dot\theta$ acts at arm $a$: a torque $C a^2\dot\theta$ (eq. 6.47, $C' = C(a/b)^2$, per unit $b^2$)")
+    d.mistake("C_t", "arm_not_squared", p.C * p.a)
+    # worked from f_n and C_t, the steps (b) and (c) answer, so a student's own values carry forward
+    cc = d.step("C_c", vb.critical_damping(inertia, 2 * math.pi * f_n), "N*m*s", symbol="C_c",
+                formula=r"2\,@I \times 2\pi\,@f_n", note=r"critical damping: $C_t/I = 2\zeta\omega_n$ with $\zeta = 1$")
+    zeta = d.step("zeta", vb.damping_ratio(c_t, cc), "", symbol=r"\zeta", formula=r"\frac{@C_t}{@C_c}")
+    d.mistake("zeta", "factor_two_missing", c_t / (inertia * 2 * math.pi * f_n))
+    d.mistake("zeta", "arm_not_squared", vb.damping_ratio(p.C * p.a, cc))
+    d.require(0.15 <= zeta <= 3 and abs(zeta - 1) >= 0.1,
+              "a damping ratio outside 0.15-3, or within 10 % of critical, where a printed value's rounding could decide the case")
+    case = d.step("case", vb.damping_case(zeta), "", symbol=r"\text{damping}",
+                  note={"light": r"$\zeta < 1$: light damping (under-damped), the disc oscillates as it dies away",
+                        "heavy": r"$\zeta > 1$: heavy damping (over-damped), the disc creeps back without oscillating",
+                        "critical": r"$\zeta = 1$: critical damping, back in the shortest time without oscillating"}[vb.damping_case(zeta)])
+    d.mistake("case", "case_inverted", {"light": "heavy", "heavy": "light", "critical": "light"}[case])
+    if case == "light":
+        w_d = d.step("omega_d", vb.damped_speed(2 * math.pi * f_n, zeta), "rad/s", symbol=r"\omega_d",
+                     formula=r"2\pi\,@f_n\,\sqrt{1 - @zeta^2}", note="eq. 6.44")
+        d.step("f_d", vb.frequency(w_d), "Hz", symbol="f_d", formula=r"\frac{@omega_d}{2\pi}")
+        d.mistake("f_d", "omega_for_f", w_d)
+        d.mistake("f_d", "damping_ignored", f_n)
+    else:
+        d.step("f_d", 0.0, "Hz", symbol="f_d",
+               note=r"$\zeta \ge 1$: the motion is not a vibration, so there is no damped frequency; $\sqrt{1 - \zeta^2}$ has no real value")
+        d.mistake("f_d", "root_of_negative", f_n * math.sqrt(zeta ** 2 - 1))
+        d.mistake("f_d", "damping_ignored", f_n)
+    d.step("C_crit", cc / p.a ** 2, "N*s/m", symbol=r"C_{\mathrm{crit}}", formula=r"\frac{@C_c}{@a^2}",
+           note=r"the dashpot at the same arm whose $C a^2$ is $C_c$")
+    d.mistake("C_crit", "arm_not_squared", cc / p.a)

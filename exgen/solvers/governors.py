@@ -299,8 +299,8 @@ def _joint_for_ball(p, d, linkage: gv.Linkage) -> None:
               "the joint hardly moves from where the ball is")
     d.step("r_j", joint, "m", symbol=r"r_2'",
            note=r"the joint's radius when the ball is at $r_2$, found by trial: the radius $r$ for which "
-                r"$r + e \sin(eta - eta_1) = r_2$, with $\sineta = (r - e_l)/l$")
-    d.step("beta_j", gv.pose(linkage, joint).beta, "rad", symbol=r"eta_2'", formula=r"\sin^{-1}rac{@r_j - @e_l}{@l}")
+                r"$r + e \sin(\beta - \beta_1) = r_2$, with $\sin\beta = (r - e_l)/l$")
+    d.step("beta_j", gv.pose(linkage, joint).beta, "rad", symbol=r"\beta_2'", formula=r"\sin^{-1}\frac{@r_j - @e_l}{@l}")
     d.step("x_j", joint + p.e * math.sin(d.value_of("beta_j") - d.value_of("beta_1")), "m", symbol=r"r_b'",
            formula=r"@r_j + @e\sin(@beta_j - @beta_1)", note=r"the check: the ball is at $r_2$")
     d.mistake("r_j", "extension_kept_vertical", p.r2)
