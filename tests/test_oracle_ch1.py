@@ -443,14 +443,21 @@ def robot_arm(v):
     i_eq = first + referred(g.I_G2 + g.I_G3, n12, g.eta) + referred(arm, n, g.eta ** 2)
     weight = g.m * G * g.L
     hold = weight * math.cos(g.theta) * n / g.eta ** 2
-    answers = {"a": i_eq, "b": hold, "c": i_eq * g.alpha_A / n + hold}
+    lift = weight * n / g.eta ** 2                              # the coefficient of cos(theta)
+
+    def equation(accelerating: float, holding: float, trig=math.cos):
+        return lambda theta, alpha_A: accelerating * alpha_A + holding * trig(theta)
+
+    answers = {"a": i_eq, "b": hold, "c": i_eq * g.alpha_A / n + hold, "d": equation(i_eq / n, lift)}
     mistakes = {"a": {"ratio_not_squared": first + (g.I_G2 + g.I_G3) * n12 / g.eta + arm * n / g.eta ** 2,
                       "one_contact_efficiency": first + ((g.I_G2 + g.I_G3) * n12 ** 2 + arm * n ** 2) / g.eta,
                       "arm_mass_forgotten": first + referred(g.I_G2 + g.I_G3, n12, g.eta) + referred(g.I_G4, n, g.eta ** 2)},
                 "b": {"efficiency_multiplied": weight * math.cos(g.theta) * n * g.eta ** 2,
                       "sin_for_cos": weight * math.sin(g.theta) * n / g.eta ** 2,
                       "ratio_inverted": weight * math.cos(g.theta) / n / g.eta ** 2},
-                "c": {"ratio_inverted": i_eq * g.alpha_A * n + hold, "weight_forgotten": i_eq * g.alpha_A / n}}
+                "c": {"ratio_inverted": i_eq * g.alpha_A * n + hold, "weight_forgotten": i_eq * g.alpha_A / n},
+                "d": {"ratio_inverted": equation(i_eq * n, lift), "weight_forgotten": equation(i_eq / n, 0.0),
+                      "sin_for_cos": equation(i_eq / n, lift, math.sin)}}
     return answers, mistakes
 
 

@@ -160,6 +160,9 @@ def test_problem_1_1_robot_arm(bank):
     i_eq = 0.05 + 0.025 + (0.1 + 0.025) * n12 ** 2 / 0.9 + (0.008 + 10 * 0.3 ** 2) * n ** 2 / 0.81
     a_coeff, c_coeff = i_eq / n, n / 0.81 * 10 * G * 0.3     # tau_m = 0.7028 alpha_A + 12.11 cos(theta)
     assert (round(a_coeff, 4), round(c_coeff, 2)) == (0.7028, 12.11)
+    # the problem's own question, the equation: 0.7028 alpha_A + 12.11 cos(theta), at any theta and alpha_A
+    for theta, alpha in ((0.2, 1.0), (0.9, 4.0), (1.3, 9.0)):
+        assert got["d"](theta=theta, alpha_A=alpha) == pytest.approx(a_coeff * alpha + c_coeff * math.cos(theta), rel=1e-5)
     assert got["a"] == pytest.approx(i_eq)
     assert got["b"] == pytest.approx(c_coeff * math.cos(math.radians(30)))
     assert got["c"] == pytest.approx(a_coeff * 2 + c_coeff * math.cos(math.radians(30)))

@@ -216,3 +216,19 @@ def robot_arm(p, d):
     d.step("tau_m", i_eq * alpha_m + hold, "N*m", symbol=r"\tau_m", formula=r"@I_EQ\,@alpha_m + @tau_g")
     d.mistake("tau_m", "ratio_inverted", i_eq * p.alpha_A * n + hold)
     d.mistake("tau_m", "weight_forgotten", i_eq * alpha_m)
+    _torque_equation(d, i_eq, n, weight * n / p.eta ** 2)
+
+
+def _torque_equation(d, i_eq: float, n: float, weight_term: float) -> None:
+    """Problem 1.1's own question: τ_m as an equation in θ and α_A, from the coefficients worked above."""
+    from ..answertypes.symbolic import Expression
+
+    def equation(accelerating: float, holding: float, trig: str = "cos") -> Expression:
+        text = f"{accelerating:.10g}*alpha_A" + (f" + {holding:.10g}*{trig}(theta)" if holding else "")
+        return Expression.parse(text, ("theta", "alpha_A"))
+
+    d.step("tau_expr", equation(i_eq / n, weight_term), symbol=r"\tau_m(\theta, \alpha_A)",
+           note=r"$\tau_m = (I_{EQ}/n)\,\alpha_A + (n\,m g L/\eta^2)\cos\theta$, θ above the horizontal")
+    d.mistake("tau_expr", "ratio_inverted", equation(i_eq * n, weight_term))
+    d.mistake("tau_expr", "weight_forgotten", equation(i_eq / n, 0.0))
+    d.mistake("tau_expr", "sin_for_cos", equation(i_eq / n, weight_term, "sin"))
