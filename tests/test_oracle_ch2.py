@@ -337,11 +337,14 @@ def radial_engine(v):
     s_max = f["S_dir"] + f["S_rev"]
     as_rpm = (1 / RPM) ** 2
     answers = {"a": f["P_dir"], "b": count * g.m * g.S / 4, "c": s_max,
-               "d": "balanced" if s_max <= TIED else "not balanced"}
+               "d": "balanced" if s_max <= TIED else "not balanced",
+               # the direct cranks, m/2 each at r, all at the crank: (N/2) m r w^2 as a formula
+               "e": lambda m, r, omega: count * m / 2 * r * omega ** 2}
     mistakes = {"a": {"stroke_for_radius": stroke["P_dir"], "rpm_as_rad_s": f["P_dir"] * as_rpm},
                 "b": {"stroke_for_radius": count * g.m * g.S / 2},
                 "c": {"secondary_speed_not_doubled": s_max / 4, "n_inverted": s_max * f["n"] ** 2,
-                      "stroke_for_radius": stroke["S_dir"] + stroke["S_rev"], "rpm_as_rad_s": s_max * as_rpm}}
+                      "stroke_for_radius": stroke["S_dir"] + stroke["S_rev"], "rpm_as_rad_s": s_max * as_rpm},
+                "e": {"full_mass_on_direct_crank": lambda m, r, omega: count * m * r * omega ** 2}}
     return answers, mistakes
 
 

@@ -223,6 +223,9 @@ def test_problem_2_3_radial_primary_by_one_mass_secondary_balanced(bank, cylinde
     assert got["a"] == pytest.approx(cylinders * 1.2 / 2 * 0.1 * OMEGA_2000 ** 2)
     assert got["b"] == pytest.approx(cylinders * 1.2 * 100 / 2)
     assert got["c"] == 0.0 and got["d"] == "balanced"
+    # (a) "prove": the primary resultant as a formula, (N/2) m r w^2, whatever m, r and w
+    for m, r, w in ((1.2, 0.1, OMEGA_2000), (3.0, 0.05, 150.0)):
+        assert got["e"](m=m, r=r, omega=w) == pytest.approx(cylinders / 2 * m * r * w ** 2)
 
 
 def test_example_2_9_v_twin(bank):

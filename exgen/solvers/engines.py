@@ -341,6 +341,20 @@ def radial_engine(p, d):
     record(d, "S_max", "n_inverted", secondary * n ** 2)
     record(d, "S_max", "secondary_speed_not_doubled", secondary / 4)
     d.mistake("sec_verdict", "opposite", "not balanced" if secondary <= ZERO_TOL else "balanced")
+    _primary_equation(d, count)
+
+
+def _primary_equation(d, count: int) -> None:
+    """Problem 2.3's proof as a formula: the N direct cranks, each m/2 at r turning with the crank, all
+    stand at the crank and add to (N/2) m r ω²; the reverse cranks close (N ≥ 3)."""
+    from ..answertypes.symbolic import Expression
+
+    def force(per_cylinder: str) -> Expression:
+        return Expression.parse(f"{count}*{per_cylinder}*r*omega^2", ("m", "r", "omega"))
+
+    d.step("P_expr", force("m/2"), symbol=r"F_P(m, r, \omega)",
+           note=rf"the {count} direct cranks, each $m/2$ at $r$, stand together at the crank: $F_P = \frac{{{count}}}{{2}} m r\omega^2$")
+    d.mistake("P_expr", "full_mass_on_direct_crank", force("m"))
 
 
 def v_engine(p, d):
