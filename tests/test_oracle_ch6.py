@@ -206,10 +206,12 @@ def damped_spring_mass(v):
     critical = 2 * g.m * w
     zeta = g.C / critical
     wd = w * math.sqrt(1 - zeta ** 2)
-    answers = {"a": critical, "b": zeta, "c": hz(wd), "d": TWO_PI / wd}
+    answers = {"a": critical, "b": zeta, "c": hz(wd), "d": TWO_PI / wd,
+               "e": lambda x, v: -(g.C * v + g.K * x) / g.m}        # m x'' + C x' + K x = 0
     mistakes = {"a": {"factor_two_missing": g.m * w}, "b": {"factor_two_missing": g.C / (g.m * w)},
                 "c": {"omega_for_f": wd, "damping_ignored": hz(w)},
-                "d": {"omega_for_f": 1 / wd, "damping_ignored": TWO_PI / w}}
+                "d": {"omega_for_f": 1 / wd, "damping_ignored": TWO_PI / w},
+                "e": {"damping_ignored": lambda x, v: -g.K * x / g.m}}
     return answers, mistakes
 
 

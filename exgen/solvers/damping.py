@@ -58,6 +58,20 @@ def damped_spring_mass(p, d):
     d.step("T_d", 1 / fd, "s", symbol=r"T_d", formula=r"\frac{1}{@f_d}", note="the periodic time, eq. 6.45")
     d.mistake("T_d", "omega_for_f", 1 / wd)
     d.mistake("T_d", "damping_ignored", 1 / vb.frequency(omega))
+    _equation_of_motion(p, d)
+
+
+def _equation_of_motion(p, d) -> None:
+    """Eq. 6.42, m ẍ + C ẋ + K x = 0, asked as the acceleration in the displacement x and velocity v = ẋ."""
+    from ..answertypes.symbolic import Expression
+
+    def acceleration(damping: float, stiffness: float) -> Expression:
+        text = f"-({damping / p.m:.10g})*v" if damping else ""
+        return Expression.parse(f"{text} - ({stiffness / p.m:.10g})*x", ("x", "v"))
+
+    d.step("a_expr", acceleration(p.C, p.K), symbol=r"\ddot{x}(x, v)",
+           note=r"eq. 6.42: $m\ddot x + C\dot x + Kx = 0$, so $\ddot x = -(C/m)\,v - (K/m)\,x$ with $v = \dot x$")
+    d.mistake("a_expr", "damping_ignored", acceleration(0.0, p.K))
 
 
 def log_decrement(p, d):
