@@ -110,3 +110,15 @@ def test_fluctuating_resistance_is_drawn_dashed(bank):
     svg = figure_svg(variant)
     (resisting,) = elements(svg, "resisting-curve", "path")
     assert resisting.get("stroke-dasharray") and "resisting torque" in texts(svg)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_a_torque_time_diagram_to_be_read_has_every_corner_on_its_grid(bank, seed):
+    # the figure is the given: each corner of the pulse stands where a vertical and a horizontal grid line cross
+    variant = make_variant(bank.get("flywheels.torque_time_reading"), seed)
+    svg = figure_svg(variant)
+    grid = elements(svg, "grid")
+    xs = {round(float(g.get("x1")), 2) for g in grid if g.get("x1") == g.get("x2")}
+    ys = {round(float(g.get("y1")), 2) for g in grid if g.get("y1") == g.get("y2")}
+    for x, y in _curve(svg):
+        assert min(abs(x - g) for g in xs) < 0.02 and min(abs(y - g) for g in ys) < 0.02, (x, y)

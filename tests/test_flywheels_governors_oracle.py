@@ -18,6 +18,7 @@ import pytest
 
 from exgen.solve.variant import make_variant
 
+import figure_readings
 import sheet_values
 from sheet_values import G
 
@@ -88,8 +89,16 @@ def flywheel_rim(v):
 
 
 def torque_time(v):
-    p = printed(v, "tau_0", "tau_p", "t1", "t2", "t4", "T", "N", "m", "k",
-                *(() if v.param("dwell").text == "0" else ("t3",)))
+    return _torque_time(printed(v, "tau_0", "tau_p", "t1", "t2", "t4", "T", "N", "m", "k",
+                                *(() if v.param("dwell").text == "0" else ("t3",))))
+
+
+def torque_time_reading(v):
+    """The same, with the pulse read off the figure (its grid and the scales its axes print)."""
+    return _torque_time({**printed(v, "N", "m", "k"), **figure_readings.torque_time_reading(v)})
+
+
+def _torque_time(p):
     t3 = p.get("t3", p["t2"])
     corners = [(0.0, p["tau_0"]), (p["t1"], p["tau_0"]), (p["t2"], p["tau_p"]), (t3, p["tau_p"]),
                (p["t4"], p["tau_0"]), (p["T"], p["tau_0"])]
@@ -274,6 +283,7 @@ def spring_controlled(v):
 ORACLES = {
     "flywheels.speed_fluctuation": speed_fluctuation, "flywheels.flywheel_rim": flywheel_rim,
     "flywheels.torque_time": torque_time, "flywheels.punching_press": punching_press,
+    "flywheels.torque_time_reading": torque_time_reading,
     "flywheels.turning_moment_equation": turning_moment_equation,
     "flywheels.fluctuating_resistance": fluctuating_resistance, "flywheels.starting_torque": starting_torque,
     "flywheels.energy_coefficient": energy_coefficient, "governors.watt_height": watt_height,

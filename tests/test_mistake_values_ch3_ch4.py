@@ -6,9 +6,11 @@ from __future__ import annotations
 import math
 import re
 from decimal import Decimal
+from types import SimpleNamespace
 
 import pytest
 
+import figure_readings
 from sheet_values import G, check_mistakes, printed
 from test_flywheels_governors_oracle import ORACLES, governor_speed, torque_terms
 
@@ -50,7 +52,16 @@ def flywheel_rim(v):
 def torque_time(v):
     dwell = v.param("dwell").text != "0"
     g = printed(v, "tau_0", "tau_p", "t1", "t2", "t4", "T", "N", *(("t3",) if dwell else ()))
-    t3 = g.t3 if dwell else g.t2
+    return _torque_time(v, g, g.t3 if dwell else g.t2)
+
+
+def torque_time_reading(v):
+    """The same slips, with the pulse read off the figure."""
+    g = SimpleNamespace(**vars(printed(v, "N")), **figure_readings.torque_time_reading(v))
+    return _torque_time(v, g, g.t3)
+
+
+def _torque_time(v, g, t3):
     pulse = ((g.t4 - g.t1) + (t3 - g.t2)) / 2 * (g.tau_p - g.tau_0)     # the trapezium above the base
     a = answers(v)
     return {"a": {"peak_base_average": (g.tau_p + g.tau_0) / 2, "base_left_out": pulse / g.T},
@@ -255,6 +266,7 @@ def spring_controlled(v):
 MISTAKES = {
     "flywheels.speed_fluctuation": speed_fluctuation, "flywheels.flywheel_rim": flywheel_rim,
     "flywheels.torque_time": torque_time, "flywheels.punching_press": punching_press,
+    "flywheels.torque_time_reading": torque_time_reading,
     "flywheels.turning_moment_equation": turning_moment_equation,
     "flywheels.fluctuating_resistance": fluctuating_resistance, "flywheels.starting_torque": starting_torque,
     "flywheels.energy_coefficient": energy_coefficient, "governors.watt_height": watt_height,

@@ -66,6 +66,14 @@ EXAMPLE_3_2 = dict(tau_0="5.5 N*m", tau_p="44 N*m", t1="0.5 s", rise="0.2 s", dw
                    idle="0.9 s", N="1500 rpm", m="18 kg", k="250 mm")
 
 
+def test_example_3_2_read_from_the_figure_works_as_printed(bank):
+    # the diagram as the given: the same pulse read off the grid gives the printed template's answers
+    read, _, _ = answers(bank, "flywheels.torque_time_reading", **EXAMPLE_3_2)
+    printed_values, _, _ = answers(bank, "flywheels.torque_time", **EXAMPLE_3_2)
+    assert read == pytest.approx(printed_values)
+    assert round(read["a"], 2) == 13.20          # the mean torque, with the erratum's omega = 157.08 rad/s
+
+
 def test_example_3_2_torque_time(bank):
     got, variant, _ = answers(bank, "flywheels.torque_time", **EXAMPLE_3_2)
     assert [variant.param(n).text for n in ("t2", "t3", "t4", "T")] == ["0.7", "0.9", "1.1", "2"]

@@ -42,6 +42,7 @@ CASES = [
     ('Example 3.1', 'flywheels.speed_fluctuation', {'a1': '295 mm^2', 'a2': '685 mm^2', 'a3': '40 mm^2', 'a4': '340 mm^2', 'a5': '960 mm^2', 'first': 'above', 'Ts': '5 N*m', 'As': '1 deg', 'N': '1800 rpm', 'm': '36 kg', 'k': '150 mm'}),
     ('Example 3.1 (with the closing loop)', 'flywheels.speed_fluctuation', {'a6': '270 mm^2', 'a1': '295 mm^2', 'a2': '685 mm^2', 'a3': '40 mm^2', 'a4': '340 mm^2', 'a5': '960 mm^2', 'first': 'above', 'Ts': '5 N*m', 'As': '1 deg', 'N': '1800 rpm', 'm': '36 kg', 'k': '150 mm'}),
     ('Example 3.2', 'flywheels.torque_time', {'tau_0': '5.5 N*m', 'tau_p': '44 N*m', 't1': '0.5 s', 'rise': '0.2 s', 'dwell': '0.2 s', 'fall': '0.2 s', 'idle': '0.9 s', 'N': '1500 rpm', 'm': '18 kg', 'k': '250 mm'}),
+    ('Example 3.2 (read from the figure)', 'flywheels.torque_time_reading', {'tau_0': '5.5 N*m', 'tau_p': '44 N*m', 't1': '0.5 s', 'rise': '0.2 s', 'dwell': '0.2 s', 'fall': '0.2 s', 'idle': '0.9 s', 'N': '1500 rpm', 'm': '18 kg', 'k': '250 mm'}),
     ('Example 3.3', 'flywheels.punching_press', {'P': '2.25 kW', 'I': '50 kg*m^2', 'N': '250 rpm', 'E': '4.75 kJ', 't': '0.75 s'}),
     ('Problem 3.2', 'flywheels.turning_moment_equation', {'T0': '14500 N*m', 'b': '2300 N*m', 'c': '-1900 N*m', 'n': 2, 'N': '150 rpm', 'band': '0.5 %', 'theta': '30 deg'}),
     ('Problem 3.3', 'flywheels.starting_torque', {'m': '2450 kg', 'k': '1 m', 'tau': '1250 N*m', 't': '10 s'}),
