@@ -446,6 +446,7 @@ def robot_arm(v):
     lift = weight * n / g.eta ** 2                              # the coefficient of cos(theta)
 
     def equation(accelerating: float, holding: float, trig=math.cos):
+        accelerating, holding = (float(f"{c:.6g}") for c in (accelerating, holding))   # the key prints six figures
         return lambda theta, alpha_A: accelerating * alpha_A + holding * trig(theta)
 
     answers = {"a": i_eq, "b": hold, "c": i_eq * g.alpha_A / n + hold, "d": equation(i_eq / n, lift)}

@@ -200,6 +200,11 @@ def natural_frequency_formula(v):
 # ---- damped (§6.6-6.7) ---------------------------------------------------------------------------------
 
 
+def six(coefficient: float) -> float:
+    """A formula's coefficient as the key prints it, to six significant figures."""
+    return float(f"{coefficient:.6g}")
+
+
 def damped_spring_mass(v):
     g = printed(v, "m", "K", "C")
     w = omega(g.K, g.m)
@@ -207,11 +212,11 @@ def damped_spring_mass(v):
     zeta = g.C / critical
     wd = w * math.sqrt(1 - zeta ** 2)
     answers = {"a": critical, "b": zeta, "c": hz(wd), "d": TWO_PI / wd,
-               "e": lambda x, v: -(g.C * v + g.K * x) / g.m}        # m x'' + C x' + K x = 0
+               "e": lambda x, v: -six(g.C / g.m) * v - six(g.K / g.m) * x}   # m x'' + C x' + K x = 0
     mistakes = {"a": {"factor_two_missing": g.m * w}, "b": {"factor_two_missing": g.C / (g.m * w)},
                 "c": {"omega_for_f": wd, "damping_ignored": hz(w)},
                 "d": {"omega_for_f": 1 / wd, "damping_ignored": TWO_PI / w},
-                "e": {"damping_ignored": lambda x, v: -g.K * x / g.m}}
+                "e": {"damping_ignored": lambda x, v: -six(g.K / g.m) * x}}
     return answers, mistakes
 
 

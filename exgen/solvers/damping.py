@@ -66,8 +66,8 @@ def _equation_of_motion(p, d) -> None:
     from ..answertypes.symbolic import Expression
 
     def acceleration(damping: float, stiffness: float) -> Expression:
-        text = f"-({damping / p.m:.10g})*v" if damping else ""
-        return Expression.parse(f"{text} - ({stiffness / p.m:.10g})*x", ("x", "v"))
+        text = f"-({damping / p.m:.6g})*v" if damping else ""
+        return Expression.parse(f"{text} - ({stiffness / p.m:.6g})*x", ("x", "v"))
 
     d.step("a_expr", acceleration(p.C, p.K), symbol=r"\ddot{x}(x, v)",
            note=r"eq. 6.42: $m\ddot x + C\dot x + Kx = 0$, so $\ddot x = -(C/m)\,v - (K/m)\,x$ with $v = \dot x$")

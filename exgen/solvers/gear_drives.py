@@ -224,7 +224,7 @@ def _torque_equation(d, i_eq: float, n: float, weight_term: float) -> None:
     from ..answertypes.symbolic import Expression
 
     def equation(accelerating: float, holding: float, trig: str = "cos") -> Expression:
-        text = f"{accelerating:.10g}*alpha_A" + (f" + {holding:.10g}*{trig}(theta)" if holding else "")
+        text = f"{accelerating:.6g}*alpha_A" + (f" + {holding:.6g}*{trig}(theta)" if holding else "")
         return Expression.parse(text, ("theta", "alpha_A"))
 
     d.step("tau_expr", equation(i_eq / n, weight_term), symbol=r"\tau_m(\theta, \alpha_A)",
