@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from exgen.cli import main
+from exgen.issue.assignment import load_assignment
 from graders.analysis import analyse, point_biserial
 from graders.record import read_record
 
@@ -58,16 +59,17 @@ def test_signs_never_change_a_mark(simulated):
 
 def test_the_canvas_gradebook_has_canvas_headers_points_possible_and_the_graded_only(simulated):
     graded, plan, module = simulated
+    possible = read_record(graded)["max_points"]      # the assignment's marks, every part counted
     rows = list(csv.reader((graded / "canvas_gradebook.csv").open(encoding="utf-8")))
     assert rows[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section", "Tutorial 1: Belt drives"]
-    assert rows[1][0] == "Points Possible" and float(rows[1][5]) == 26
+    assert rows[1][0] == "Points Possible" and float(rows[1][5]) == possible
     by_id = {r[2]: r for r in rows[2:]}
     assert len(by_id) == STUDENTS - 1
     taker, _ = plan["copies"]["another_students_sheet_code"]
     assert taker not in by_id  # a refused file: no row, so the import keeps the grade the student has
     student = module.roster(STUDENTS)[0]
     assert by_id[student.id][:5] == [student.name, "", student.id, student.email, student.section]
-    assert 0 <= float(by_id[student.id][5]) <= 26
+    assert 0 <= float(by_id[student.id][5]) <= possible
 
 
 def test_the_moodle_grades_match_by_id_number_or_email(simulated):
@@ -80,11 +82,13 @@ def test_the_moodle_grades_match_by_id_number_or_email(simulated):
     assert all(r["Tutorial 1: Belt drives"] == gradebook[r["ID number"]] for r in rows)
 
 
-def test_the_parts_csv_has_a_column_per_part(simulated):
+def test_the_parts_csv_has_a_column_per_part(simulated, bank):
     graded, _, _ = simulated
     header = next(csv.reader((graded / "parts.csv").open(encoding="utf-8")))
-    assert header[:3] == ["student", "name", "q1 (a) /1"] and header[-2:] == ["total /26", "status"]
-    assert len(header) == 2 + 18 + 2
+    possible = read_record(graded)["max_points"]
+    parts = sum(len(bank.get(q.template).parts) for q in load_assignment(SCRIPT.parent / "tutorial1.yaml").questions)
+    assert header[:3] == ["student", "name", "q1 (a) /1"] and header[-2:] == [f"total /{possible:g}", "status"]
+    assert len(header) == 2 + parts + 2
 
 
 def test_the_html_report_is_self_contained_with_pictures(simulated):
