@@ -236,6 +236,37 @@ def fourbar_both_roots(v):
     return out
 
 
+def slider_crank_both_roots(v):
+    """Worked from the loop R2 + R3 = R1 + R4 with A at the origin, by the slip each name says."""
+    g = printed(v, "L1", "L2", "L3", "theta2")
+    line = str(v.param("line").exact)
+    vertical = line in ("right", "left")
+    across = g.L1 * (1.0 if line in ("right", "above") else -1.0)
+    drawn_first = str(v.param("assembly").exact) == "1"
+
+    def both(offset):
+        if vertical:
+            r = (offset - g.L2 * math.cos(g.theta2)) / g.L3
+            return (math.acos(r), -math.acos(r)) if abs(r) <= 1 else None
+        r = (offset - g.L2 * math.sin(g.theta2)) / g.L3
+        return (math.asin(r), math.pi - math.asin(r)) if abs(r) <= 1 else None
+
+    def c_at(theta3):
+        if vertical:
+            return g.L2 * math.sin(g.theta2) + g.L3 * math.sin(theta3)
+        return g.L2 * math.cos(g.theta2) + g.L3 * math.cos(theta3)
+
+    first, second = both(across)
+    out = {"a": {}, "b": {"other_function_rule": math.pi - first if vertical else -first},
+           "c": {"wrong_circuit": "second" if drawn_first else "first"},
+           "d": {"wrong_circuit": c_at(second if drawn_first else first)}}
+    flipped = both(-across) if across else None
+    if flipped:
+        out["a"]["offset_sign"], out["b"]["offset_sign"] = flipped
+        out["d"]["offset_sign"] = c_at(flipped[0] if drawn_first else flipped[1])
+    return out
+
+
 NAMES = ("AB", "BC", "CD", "DA")
 
 
@@ -413,7 +444,8 @@ MISTAKES = {
     "linkages.rocker_swing": rocker_swing, "linkages.slider_crank": slider_crank_mistakes,
     "linkages.actuator_swing": actuator_swing, "linkages.two_position_synthesis": two_position_synthesis,
     "linkages.three_position_synthesis": three_position_synthesis,
-    "linkages.fourbar_both_roots": fourbar_both_roots, "linkages.mobility_exceptions": mobility_exceptions,
+    "linkages.fourbar_both_roots": fourbar_both_roots, "linkages.slider_crank_both_roots": slider_crank_both_roots,
+    "linkages.mobility_exceptions": mobility_exceptions,
     "linkages.mobility": mobility,
 }
 

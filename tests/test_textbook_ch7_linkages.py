@@ -220,3 +220,31 @@ def test_slider_crank_statement_says_where_the_slider_runs_in_plain_words(bank, 
         "yA": "0 mm", "tip": "40 mm"})
     statement = " ".join(variant.statement.split())
     assert line in statement and where in statement
+
+
+def test_slider_crank_example_both_roots_then_the_one_drawn(bank):
+    # §7.10: crank 0.5 in at 75 deg, coupler 1.75 in, a vertical line of slide 1 in right of A. The loop
+    # across the line gives cos theta3 = 0.4975, "theta3 = 60.16 deg or -60.16 deg"; "based on the problem"
+    # the slider is below, theta3 = -60.16 deg, and r4 = 1.035 in down the line: y_C = -1.035 in from A.
+    given = dict(line="right", L1="1 inch", L2="0.5 inch", L3="1.75 inch", theta2="75 deg")
+    got, steps, _ = answers_and_steps(bank, "linkages.slider_crank_both_roots", assembly="2", **given)
+    assert steps["ratio"] == pytest.approx(0.4975, abs=5e-5)
+    assert got["a"] == pytest.approx(60.16, abs=0.01)
+    assert got["b"] == pytest.approx(-60.16, abs=0.01)
+    assert got["c"] == "second"
+    assert got["d"] / 25.4 == pytest.approx(-1.035, abs=5e-4)
+    # drawn the other way: the same two roots, the first picked, the slider above B
+    other, _, _ = answers_and_steps(bank, "linkages.slider_crank_both_roots", assembly="1", **given)
+    assert (other["a"], other["b"]) == (pytest.approx(got["a"]), pytest.approx(got["b"]))
+    assert other["c"] == "first"
+    assert other["d"] / 25.4 == pytest.approx(0.5 * math.sin(rad(75)) + 1.75 * math.sin(rad(60.165)), abs=1e-3)
+
+
+def test_horizontal_slider_crank_roots_are_the_sine_and_its_supplement(bank):
+    # eq 7.10's line L1 below A: sin theta3 = (-L1 - L2 sin theta2) / L3, and "theta3 or (180 deg - theta3)".
+    got, _, _ = answers_and_steps(bank, "linkages.slider_crank_both_roots", line="below", L1="20 mm", L2="50 mm",
+                                  L3="180 mm", theta2="60 deg", assembly="1")
+    first = math.asin((-20 - 50 * math.sin(rad(60))) / 180)
+    assert got["a"] == pytest.approx(deg(first))
+    assert got["b"] % 360 == pytest.approx(180 - deg(first))
+    assert got["c"] == "first" and got["d"] == pytest.approx(50 * math.cos(rad(60)) + 180 * math.cos(first))
