@@ -43,7 +43,7 @@ def test_every_value_a_sheet_figure_prints_is_given_data(bank):
     for template_id in ("linkages.fourbar_position", "linkages.coupler_point", "linkages.slider_crank",
                         "linkages.grashof", "linkages.rocker_swing", "linkages.actuator_swing",
                         "linkages.two_position_synthesis", "linkages.three_position_synthesis",
-                        "linkages.fourbar_both_roots"):
+                        "linkages.fourbar_both_roots", "linkages.slider_crank_both_roots"):
         for seed in range(8):
             variant = make_variant(bank.get(template_id), seed)
             given = {str(p) for p in variant.params}
@@ -77,6 +77,16 @@ def test_both_roots_sheet_names_no_circuit_and_the_key_draws_the_other(bank, see
     assert "circuit" not in sheet.lower() and "C′" not in texts(sheet)
     assert "C′" in texts(key) and len([e for e in root(key).iter(f"{SVG}line")
                                        if "other-circuit" in (e.get("class") or "")]) == 2
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_slider_crank_roots_sheet_names_no_root_and_the_key_draws_the_other(bank, seed):
+    from exgen.figures.slider_crank_roots import as_drawn, both_roots
+    variant = make_variant(bank.get("linkages.slider_crank_both_roots"), seed)
+    sheet, key = as_drawn(variant), both_roots(variant)
+    assert "root" not in sheet.lower() and "C′" not in texts(sheet)
+    assert "C′" in texts(key) and len([e for e in root(key).iter(f"{SVG}line")
+                                       if "other-circuit" in (e.get("class") or "")]) == 1
 
 
 @pytest.mark.parametrize("seed", range(6))
