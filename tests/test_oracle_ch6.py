@@ -54,9 +54,11 @@ def decrements(first_over_last: float, n: int) -> dict[str, float]:
 def simple_pendulum(v):
     g = printed(v, "l", "T")
     w = math.sqrt(G / g.l)
-    answers = {"a": w, "b": hz(w), "c": TWO_PI / w, "d": G * (g.T / TWO_PI) ** 2}
+    answers = {"a": w, "b": hz(w), "c": TWO_PI / w, "d": G * (g.T / TWO_PI) ** 2,
+               "e": lambda theta: -six(G / g.l) * theta}                       # m l^2 theta'' + m g l theta = 0
     mistakes = {"a": {"sqrt_missing": G / g.l}, "b": {"omega_for_f": w}, "c": {"omega_for_f": 1 / w},
-                "d": {"missing_2pi": G * g.T ** 2, "period_as_frequency": G / (TWO_PI * g.T) ** 2}}
+                "d": {"missing_2pi": G * g.T ** 2, "period_as_frequency": G / (TWO_PI * g.T) ** 2},
+                "e": {"sqrt_kept": lambda theta: -six(w) * theta}}
     return answers, mistakes
 
 

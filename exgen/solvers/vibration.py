@@ -47,6 +47,19 @@ def simple_pendulum(p, d):
     d.mistake("l_T", "missing_2pi", vb.G * p.T ** 2)
     record(d, "l_T", "period_as_frequency", vb.G / (2 * math.pi * p.T) ** 2)
     d.require(abs(length - p.l) >= 0.03 * length, "the second pendulum would be nearly as long as the first")
+    _pendulum_equation(p, d)
+
+
+def _pendulum_equation(p, d) -> None:
+    """Eq. 6.8, m l² θ̈ + m g l θ = 0 for small angles, asked as θ̈ in θ."""
+    from ..answertypes.symbolic import Expression
+
+    def acceleration(coefficient: float) -> Expression:
+        return Expression.parse(f"-({coefficient:.6g})*theta", ("theta",))
+
+    d.step("alpha_expr", acceleration(vb.G / p.l), symbol=r"\ddot{\theta}(\theta)",
+           note=r"eq. 6.8: $m l^2\ddot\theta + m g l\,\theta = 0$ (sin θ ≈ θ), so $\ddot\theta = -(g/l)\,\theta$")
+    d.mistake("alpha_expr", "sqrt_kept", acceleration(math.sqrt(vb.G / p.l)))
 
 
 def compound_pendulum(p, d):
