@@ -266,13 +266,17 @@ def damped_shaft_disc(v):
     zeta = torque_per_rad_s / critical
     case = "light" if zeta < 1 else "heavy"                  # never drawn at exactly 1
     answers = {"a": q, "b": hz(w), "c": torque_per_rad_s, "d": zeta, "e": case,
-               "f": hz(w * math.sqrt(1 - zeta ** 2)) if zeta < 1 else 0.0, "g": critical / g.a ** 2}
+               "f": hz(w * math.sqrt(1 - zeta ** 2)) if zeta < 1 else 0.0, "g": critical / g.a ** 2,
+               # I theta'' + C a^2 theta' + q theta = 0
+               "h": lambda theta, w: -six(torque_per_rad_s / inertia) * w - six(q / inertia) * theta}
     mistakes = {"a": {"bending_for_polar": g.G * math.pi * g.d ** 4 / 64 / g.l},
                 "b": {"omega_for_f": w, "sqrt_missing": q / inertia / TWO_PI},
                 "c": {"arm_not_squared": g.C * g.a},
                 "d": {"factor_two_missing": 2 * zeta, "arm_not_squared": zeta / g.a},
                 "e": {"case_inverted": "heavy" if case == "light" else "light"},
-                "f": {"damping_ignored": hz(w)}, "g": {"arm_not_squared": critical / g.a}}
+                "f": {"damping_ignored": hz(w)}, "g": {"arm_not_squared": critical / g.a},
+                "h": {"damping_ignored": lambda theta, w: -six(q / inertia) * theta,
+                      "arm_not_squared": lambda theta, w: -six(g.C * g.a / inertia) * w - six(q / inertia) * theta}}
     if zeta < 1:
         mistakes["f"]["omega_for_f"] = w * math.sqrt(1 - zeta ** 2)
     else:

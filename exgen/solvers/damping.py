@@ -147,3 +147,19 @@ def damped_shaft_disc(p, d):
     d.step("C_crit", cc / p.a ** 2, "N*s/m", symbol=r"C_{\mathrm{crit}}", formula=r"\frac{@C_c}{@a^2}",
            note=r"the dashpot at the same arm whose $C a^2$ is $C_c$")
     d.mistake("C_crit", "arm_not_squared", cc / p.a)
+    _disc_equation(p, d, inertia, q)
+
+
+def _disc_equation(p, d, inertia: float, q: float) -> None:
+    """Eq. 6.43, I θ̈ + C a² θ̇ + q θ = 0, asked as θ̈ in the twist θ and the angular velocity w = θ̇."""
+    from ..answertypes.symbolic import Expression
+
+    def acceleration(damping: float) -> Expression:
+        text = f"-({damping / inertia:.6g})*w" if damping else ""
+        return Expression.parse(f"{text} - ({q / inertia:.6g})*theta", ("theta", "w"))
+
+    d.step("alpha_expr", acceleration(p.C * p.a ** 2), symbol=r"\ddot{\theta}(\theta, w)",
+           note=r"eq. 6.43: $I\ddot\theta + C a^2\dot\theta + q\theta = 0$, so "
+                r"$\ddot\theta = -(C a^2/I)\,w - (q/I)\,\theta$ with $w = \dot\theta$")
+    d.mistake("alpha_expr", "damping_ignored", acceleration(0.0), if_apart=True)
+    d.mistake("alpha_expr", "arm_not_squared", acceleration(p.C * p.a), if_apart=True)
