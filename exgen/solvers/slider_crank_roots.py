@@ -80,7 +80,7 @@ def slider_crank_both_roots(p, d):
     chosen = first if shown == "first" else second
     c_chosen = along(slide, p.L2, p.L3, p.theta2, chosen)
     drawn = d.step("root", shown, "", symbol=r"\text{as drawn}",
-           note=f"the figure has C {_place(vertical, c_chosen, p.L2, p.theta2)} of B: "
+           note=f"the figure has C {_place(vertical, c_chosen, p.L2, p.theta2)} B: "
                 + (r"$\theta_3$" if shown == "first" else r"$\theta_3'$"))
     d.mistake("root", "wrong_circuit", other)
     trig = r"\sin" if vertical else r"\cos"
@@ -95,7 +95,7 @@ def _place(vertical: bool, c_along: float, crank: float, theta2: float) -> str:
     b_along = crank * (math.sin(theta2) if vertical else math.cos(theta2))
     if vertical:
         return "below" if c_along < b_along else "above"
-    return "to the left" if c_along < b_along else "to the right"
+    return "to the left of" if c_along < b_along else "to the right of"
 
 
 def _slips(p, d, line, slide, across, both, shown) -> None:
