@@ -58,7 +58,7 @@ def _pendulum_equation(p, d) -> None:
         return Expression.parse(f"-({coefficient:.6g})*theta", ("theta",))
 
     d.step("alpha_expr", acceleration(vb.G / p.l), symbol=r"\ddot{\theta}(\theta)",
-           note=r"eq. 6.8: $m l^2\ddot\theta + m g l\,\theta = 0$ (sin θ ≈ θ), so $\ddot\theta = -(g/l)\,\theta$")
+           note=r"eq. 6.8: $m l^2\ddot\theta + m g l\,\theta = 0$ ($\sin\theta \approx \theta$), so $\ddot\theta = -(g/l)\,\theta$")
     d.mistake("alpha_expr", "sqrt_kept", acceleration(math.sqrt(vb.G / p.l)))
 
 
