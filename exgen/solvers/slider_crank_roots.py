@@ -73,7 +73,7 @@ def slider_crank_both_roots(p, d):
         wrapped(d, "theta3_second", r"\theta_3'", r"-@theta3_first", second,
                 note="the other angle with the same cosine")
     else:
-        wrapped(d, "theta3_second", r"\theta_3'", r"180^\circ - @theta3_first", second,
+        wrapped(d, "theta3_second", r"\theta_3'", r"180^\circ - @theta3_first", math.pi - first,
                 note="the other angle with the same sine")
     shown = "first" if str(p.assembly) == "1" else "second"
     other = ROOTS[1 - ROOTS.index(shown)]
