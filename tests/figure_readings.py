@@ -3,6 +3,7 @@ curve's corners are taken from the drawing and turned into times and torques by 
 labels print, so the second working shares nothing with the code that drew it but the picture."""
 from __future__ import annotations
 
+import math
 import re
 
 from exgen.figures import figure_svg
@@ -42,3 +43,44 @@ def torque_time_reading(v) -> dict:
     torques = [round((y - y0) * per_nm, 1) for _, y in corners]       # to 0.1 N·m on a 5 N·m grid
     return {"tau_0": torques[0], "tau_p": torques[2], "t1": times[1], "t2": times[2], "t3": times[3],
             "t4": times[4], "T": times[5]}
+
+
+def _polygon_area(points: list[tuple[float, float]]) -> float:
+    """|area| of a closed polygon, by the shoelace formula."""
+    return abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]))) / 2
+
+
+def loop_area_reading(v) -> dict:
+    """A turning-moment diagram on a grid, read as a student counts it: the size of a square from the grid's
+    lines, what a square stands for from the axes' labels, and each loop's area (and its heights at the grid
+    lines inside it) from the curve between successive crossings of the mean line."""
+    svg = figure_svg(v)
+    (path,) = elements(svg, "torque-curve", "path")
+    points = [(float(x), float(y)) for x, y in re.findall(r"(-?[\d.]+),(-?[\d.]+)", path.get("d"))]
+    (mean,) = elements(svg, "mean-line")
+    zero = float(mean.get("y1"))
+    xs = sorted({round(float(g.get("x1")), 3) for g in elements(svg, "grid") if g.get("x1") == g.get("x2")})
+    cell = (xs[-1] - xs[0]) / (len(xs) - 1)
+    along, up = [], []
+    for text in root(svg).iter(f"{SVG}text"):
+        if "tick" in text.get("class", "").split():
+            value = float(text.text.replace("−", "-").replace("+", ""))
+            (up if text.get("text-anchor") == "end" else along).append(
+                (float(text.get("y")) - 4 if text.get("text-anchor") == "end" else float(text.get("x")), value))
+
+    def per_square(marks) -> float:      # the labels' difference over the squares counted between them
+        (p0, v0), (p1, v1) = sorted(marks)[0], sorted(marks)[-1]
+        return abs(v1 - v0) / round(abs(p1 - p0) / cell)
+
+    loops, current = [], [points[0]]
+    for point in points[1:]:
+        current.append(point)
+        if abs(point[1] - zero) < 1e-6:
+            loops.append(current)
+            current = [point]
+    areas = [round(2 * _polygon_area(loop) / cell ** 2) / 2 for loop in loops]      # counted to the half square
+    heights = [[round(abs(y - zero) / cell) for _, y in loop[1:-1]] for loop in loops]
+    first = "above" if min(y for _, y in loops[0]) < zero - 1e-6 else "below"
+    return {"areas": areas, "heights": heights, "first": first,
+            "Ts": per_square(up), "As": math.radians(per_square(along))}
+

@@ -1,4 +1,5 @@
 """Flywheel figures: loops drawn with areas in proportion to the data, torque-time drawn to scale."""
+import math
 import re
 
 import pytest
@@ -122,3 +123,33 @@ def test_a_torque_time_diagram_to_be_read_has_every_corner_on_its_grid(bank, see
     ys = {round(float(g.get("y1")), 2) for g in grid if g.get("y1") == g.get("y2")}
     for x, y in _curve(svg):
         assert min(abs(x - g) for g in xs) < 0.02 and min(abs(y - g) for g in ys) < 0.02, (x, y)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_a_loop_diagram_to_be_read_has_every_corner_on_its_grid_and_no_area_written(bank, seed):
+    # the figure is the given of the loops: each corner of the curve stands on a grid crossing, each loop's
+    # area counts to the drawn area in whole squares, and the only numbers written are the axes' scales
+    variant = make_variant(bank.get("flywheels.loop_area_reading"), seed)
+    svg = figure_svg(variant)
+    grid = elements(svg, "grid")
+    xs = sorted({float(g.get("x1")) for g in grid if g.get("x1") == g.get("x2")})
+    ys = {float(g.get("y1")) for g in grid if g.get("y1") == g.get("y2")}
+    cell = (xs[-1] - xs[0]) / (len(xs) - 1)
+    points = _curve(svg)
+    for x, y in points:
+        assert min(abs(x - g) for g in xs) < 0.02 and min(abs(y - g) for g in ys) < 0.02, (x, y)
+    drawn = [abs(a) / cell ** 2 for a in _lobes(points)]
+    # to the drawing's precision (its coordinates are written to 0.01 px)
+    assert drawn == pytest.approx([float(variant.param(f"a{i}").text) for i in range(1, 10)], abs=0.01)
+    torque, angle = variant.param("Ts").si, variant.param("As").si
+    for label in root(svg).iter(f"{SVG}text"):
+        kind = label.get("class", "")
+        if kind == "tick":      # a multiple of 5 squares of torque, or of 4-6 squares of crank angle
+            value = float(label.text.replace("−", "-"))
+            assert value % (5 * torque) == 0 or round(value / math.degrees(angle)) % 4 == 0 or \
+                round(value / math.degrees(angle)) % 5 == 0, label.text
+        elif kind == "crossing":
+            assert re.fullmatch("[A-J]", label.text)
+        else:
+            assert not re.search(r"\d", label.text.replace(variant.param("Ts").text, "").replace(
+                f"{math.degrees(angle):g}", "")), label.text

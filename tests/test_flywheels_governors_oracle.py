@@ -88,6 +88,18 @@ def flywheel_rim(v):
     return {"a": energy, "b": mass, "c": thickness, "d": p["ratio"] * thickness}
 
 
+def loop_area_reading(v):
+    """Problem 3.1 with the loops counted off the figure's grid and the square's scale read from its axes."""
+    read = figure_readings.loop_area_reading(v)
+    p = printed(v, "N", "Cs", "D", "rho", "ratio")
+    energies = crossing_energies(read["areas"], read["first"])
+    energy = (max(energies) - min(energies)) * read["Ts"] * read["As"]
+    radius = p["D"] / 2
+    mass = energy / (p["N"] ** 2 * p["Cs"]) / radius ** 2
+    thickness = math.sqrt(mass / (p["rho"] * 2 * math.pi * radius) / p["ratio"])
+    return {"a": energy, "b": mass, "c": thickness, "d": p["ratio"] * thickness}
+
+
 def torque_time(v):
     return _torque_time(printed(v, "tau_0", "tau_p", "t1", "t2", "t4", "T", "N", "m", "k",
                                 *(() if v.param("dwell").text == "0" else ("t3",))))
@@ -283,7 +295,7 @@ def spring_controlled(v):
 ORACLES = {
     "flywheels.speed_fluctuation": speed_fluctuation, "flywheels.flywheel_rim": flywheel_rim,
     "flywheels.torque_time": torque_time, "flywheels.punching_press": punching_press,
-    "flywheels.torque_time_reading": torque_time_reading,
+    "flywheels.torque_time_reading": torque_time_reading, "flywheels.loop_area_reading": loop_area_reading,
     "flywheels.turning_moment_equation": turning_moment_equation,
     "flywheels.fluctuating_resistance": fluctuating_resistance, "flywheels.starting_torque": starting_torque,
     "flywheels.energy_coefficient": energy_coefficient, "governors.watt_height": watt_height,

@@ -40,13 +40,39 @@ def speed_fluctuation(v):
 
 
 def flywheel_rim(v):
+    return {"a": loop_energies(v, 9), **rim_slips(v)}
+
+
+def rim_slips(v):
+    """The rim's slips (b)-(d), from ΔE in (a)."""
     g = printed(v, "D", "ratio")
     a = answers(v)
     section = a["c"] ** 2 * float(g.ratio)                      # b t = k t²
-    return {"a": loop_energies(v, 9),
-            "b": {"rpm_as_rad_s": a["b"] * RPM ** 2, "diameter_for_radius": a["b"] / 4, "total_read_as_plus_minus": a["b"] / 2},
+    return {"b": {"rpm_as_rad_s": a["b"] * RPM ** 2, "diameter_for_radius": a["b"] / 4, "total_read_as_plus_minus": a["b"] / 2},
             "c": {"square_section": math.sqrt(section), "ratio_inverted": math.sqrt(section * float(g.ratio))},
             "d": {"square_section": math.sqrt(section), "ratio_inverted": a["c"] / float(g.ratio)}}
+
+
+def loop_area_reading(v):
+    """The slips of counting squares (whole squares only, every square touched as whole) and of the scales,
+    from the loops read off the figure."""
+    read = figure_readings.loop_area_reading(v)
+    a = answers(v)
+    per_square = read["Ts"] * read["As"]
+
+    def swing(count) -> float:                # greatest less least energy at A to I, from loops so counted
+        edges = [[0, *h, 0] for h in read["heights"]]
+        counted = [sum(count(l, r) for l, r in zip(e, e[1:])) for e in edges]
+        energy, levels = 0.0, [0.0]
+        for k, area in enumerate(counted[:-1]):
+            energy += area if (k % 2 == 0) == (read["first"] == "above") else -area
+            levels.append(energy)
+        return (max(levels) - min(levels)) * per_square
+
+    return {"a": {"one_scale_only": a["a"] / read["As"], "angle_scale_in_degrees": a["a"] * 180 / math.pi,
+                  "largest_loop": max(read["areas"]) * per_square,
+                  "whole_squares_only": swing(min), "part_squares_as_whole": swing(max)},
+            **rim_slips(v)}
 
 
 def torque_time(v):
@@ -266,7 +292,7 @@ def spring_controlled(v):
 MISTAKES = {
     "flywheels.speed_fluctuation": speed_fluctuation, "flywheels.flywheel_rim": flywheel_rim,
     "flywheels.torque_time": torque_time, "flywheels.punching_press": punching_press,
-    "flywheels.torque_time_reading": torque_time_reading,
+    "flywheels.torque_time_reading": torque_time_reading, "flywheels.loop_area_reading": loop_area_reading,
     "flywheels.turning_moment_equation": turning_moment_equation,
     "flywheels.fluctuating_resistance": fluctuating_resistance, "flywheels.starting_torque": starting_torque,
     "flywheels.energy_coefficient": energy_coefficient, "governors.watt_height": watt_height,

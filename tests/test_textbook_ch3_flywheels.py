@@ -44,6 +44,23 @@ def test_example_3_1_areas_may_be_given_with_the_closing_loop(bank):
     assert round(got["c"], 2) == 85.96
 
 
+def test_problem_3_1_read_from_the_figure_works_as_printed(bank):
+    # the loops as squares of 1 mm, one square 70 N·m by 4.5° (80 columns over 360°): the same answers as
+    # the printed areas give, and the key's table counts each loop from its heights at the grid lines
+    areas = [35, 410, 285, 325, 335, 260, 365, 285]
+    common = dict(first="below", Ts="70 N*m", N="900 rpm", Cs="2 %", D="650 mm", rho="7200 kg/m^3", ratio=2)
+    read, variant, warnings = answers(bank, "flywheels.loop_area_reading", cycle="360 deg", columns=80, **common,
+                                      **{f"a{i}": a for i, a in enumerate(areas, 1)})
+    printed_values, _, _ = answers(bank, "flywheels.flywheel_rim", As="4.5 deg", **common,
+                                   **{f"a{i}": f"{a} mm^2" for i, a in enumerate(areas, 1)})
+    assert read == pytest.approx(printed_values)
+    assert round(read["a"], 1) == 2474.0 and round(read["b"], 2) == 131.84
+    got = steps(variant)
+    assert [got[f"n{i}"] for i in range(1, 10)] == [*areas, 260]
+    assert [got[f"E_{c}"] for c in "ABCDEFGHIJ"] == [0, -35, 375, 90, 415, 80, 340, -25, 260, 0]
+    assert any("too tall for the grid" in w for w in warnings)     # its loops of 400 squares are not drawn
+
+
 def test_problem_3_1_rim(bank):
     areas = dict(zip([f"a{i}" for i in range(1, 10)], [35, 410, 285, 325, 335, 260, 365, 285, 260]))
     got, variant, _ = answers(bank, "flywheels.flywheel_rim", first="below", Ts="70 N*m", As="4.5 deg",

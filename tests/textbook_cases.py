@@ -91,5 +91,6 @@ CASES = [
     ('Problem 2.3', 'balancing.radial_engine', {'ncyl': '5', 'S': '200 mm', 'l': '240 mm', 'm': '1.2 kg', 'N': '2000 rpm'}),
     ('Problem 2.4(b)', 'balancing.radial_engine', {'ncyl': '6', 'S': '200 mm', 'l': '240 mm', 'm': '1.2 kg', 'N': '2000 rpm'}),
     ('Problem 3.1', 'flywheels.flywheel_rim', {'first': 'below', 'Ts': '70 N*m', 'As': '4.5 deg', 'N': '900 rpm', 'Cs': '2 %', 'D': '650 mm', 'rho': '7200 kg/m^3', 'ratio': '2', 'a1': '35 mm^2', 'a2': '410 mm^2', 'a3': '285 mm^2', 'a4': '325 mm^2', 'a5': '335 mm^2', 'a6': '260 mm^2', 'a7': '365 mm^2', 'a8': '285 mm^2'}),
+    ('Problem 3.1 (read from the figure)', 'flywheels.loop_area_reading', {'first': 'below', 'Ts': '70 N*m', 'cycle': '360 deg', 'columns': '80', 'N': '900 rpm', 'Cs': '2 %', 'D': '650 mm', 'rho': '7200 kg/m^3', 'ratio': '2', 'a1': '35', 'a2': '410', 'a3': '285', 'a4': '325', 'a5': '335', 'a6': '260', 'a7': '365', 'a8': '285'}),
     ('Problem 2.4(a)', 'balancing.inline_engine_firing', {'firing': '1-6-3-2-5-4', 'strokes': '4', 'm': '1.2 kg', 'r': '100 mm', 'l': '240 mm', 'a': '0.2 m', 'N': '2000 rpm'}),
 ]

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import math
 import string
+from itertools import accumulate
 
 from ..mechanics import flywheels as fw
+from ..mechanics import grid_loops
 
 MM2 = 1e-6
 
@@ -28,14 +30,20 @@ def _crossings(p, d, count: int, name_extremes: bool) -> tuple[float, float]:
     Returns ΔA, greatest less least, and the largest single loop (a known slip takes it for ΔA).
     When a part asks where the speed is greatest or least, no two crossings may nearly tie.
     """
-    signed = _loop_areas(p, count)
+    return _levels(d, _loop_areas(p, count), name_extremes, "mm^2", "mm² of the diagram")
+
+
+def _levels(d, signed: list[float], name_extremes: bool, unit: str, measure: str,
+            note: str = "greatest less least energy, in mm² of diagram") -> tuple[float, float]:
+    """The crossings' energies from signed loop areas in `unit` (see _crossings)."""
+    count = len(signed)
     levels = fw.crossing_energies(signed)
     letters = string.ascii_uppercase[: count + 1]
     for letter, level in zip(letters, levels):
-        d.step(f"E_{letter}", level, "mm^2")
-    d.table("Energy at each crossing, in mm² of the diagram, the energy at A taken as U = 0: each loop above "
+        d.step(f"E_{letter}", level, unit)
+    d.table(f"Energy at each crossing, in {measure}, the energy at A taken as U = 0: each loop above "
             "the mean line adds its area, each loop below takes it away; over the cycle they balance",
-            [("Crossing",), ("Loop before it", "mm^2"), ("Energy above U", "mm^2")],
+            [("Crossing",), ("Loop before it", unit), ("Energy above U", unit)],
             [[letter, signed[i - 1] if i else None, f"@E_{letter}"] for i, letter in enumerate(letters)])
     swing, high, low = fw.fluctuation_from_areas(signed)
     if name_extremes:
@@ -46,8 +54,8 @@ def _crossings(p, d, count: int, name_extremes: bool) -> tuple[float, float]:
         d.step("slowest", letters[low], "", symbol=r"\text{crossing of }\omega_{\min}", note="the least energy")
         d.mistake("fastest", "least_for_greatest", letters[low])
         d.mistake("slowest", "least_for_greatest", letters[high])
-    dA = d.step("dA", swing, "mm^2", symbol=r"\Delta A", formula=rf"@E_{letters[high]} - @E_{letters[low]}",
-                note="greatest less least energy, in mm² of diagram")
+    dA = d.step("dA", swing, unit, symbol=r"\Delta A", formula=rf"@E_{letters[high]} - @E_{letters[low]}",
+                note=note)
     return dA, max(abs(a) for a in signed)
 
 
@@ -81,7 +89,11 @@ CAST_STEEL = 7500.0
 def flywheel_rim(p, d):
     """Problem 3.1: ΔE from nine loops; the rim mass for a speed band; its rectangular section."""
     dA, largest = _crossings(p, d, 9, name_extremes=False)
-    delta_e = _energy(p, d, dA, largest)
+    _rim(p, d, _energy(p, d, dA, largest))
+
+
+def _rim(p, d, delta_e: float) -> None:
+    """The rim for ΔE (Problem 3.1): its inertia for the speed band, mass, section and rim speed."""
     inertia = d.step("I", fw.inertia_for(delta_e, p.N, p.Cs), "kg*m^2", formula=r"\frac{@dE}{@N^2\,@Cs}",
                      note="eq 3.5 solved for I")
     radius = d.step("R", p.D / 2, "m", formula=r"\frac{@D}{2}", note="the rim's mean radius")
@@ -102,6 +114,52 @@ def flywheel_rim(p, d):
     d.step("v", p.N * radius, "m/s", symbol=r"v_{\mathrm{rim}}", formula=r"@N\,@R",
            note="the rim's speed at its mean radius: " + ("within cast iron's 35 m/s; a cast-steel rim stands more"
                  if p.rho >= CAST_STEEL else "a cast-iron rim is kept under about 35 m/s"))
+
+
+# ---- Problem 3.1 with its diagram read off a grid ---------------------------------------------
+
+#: Squares a loop may stand from the mean line, so that the grid stays readable on a sheet.
+TALLEST_LOOP = 12
+
+
+def loop_area_reading(p, d):
+    """Problem 3.1 with the loops drawn on a grid: each loop's area read by counting squares, then ΔE as
+    the swing of the crossings' energies in squares × what one square stands for, then the rim."""
+    count = 9
+    areas = [getattr(p, f"a{i}") for i in range(1, count + 1)]
+    columns = round(p.columns)
+    d.require(all(a == round(a) and a >= 1 for a in areas), "a loop is not a whole number of squares")
+    d.require(columns >= grid_loops.LEAST_WIDTH * count, "too few columns for the loops")
+    widths = grid_loops.widths(areas, max(columns, grid_loops.LEAST_WIDTH * count))
+    d.require(all(a >= w - 1 for a, w in zip(areas, widths)), "a loop too small to span its columns")
+    profiles = [grid_loops.heights(max(round(a), w - 1), w) for a, w in zip(areas, widths)]
+    d.require(max(max(h) for h in profiles) <= TALLEST_LOOP, "a loop too tall for the grid")
+    above = p.first == "above"
+    sides = ["above" if above == (i % 2 == 0) else "below" for i in range(count)]
+    counted = [d.step(f"n{i + 1}", grid_loops.squares(h), "", symbol=rf"n_{{{i + 1}}}",
+                      note=f"loop {i + 1}, {sides[i]} the mean line") for i, h in enumerate(profiles)]
+    d.table("The loops read off the grid: the curve goes straight from grid crossing to grid crossing, so at "
+            "each vertical grid line inside a loop it stands a whole number of squares from the mean line; "
+            "each column is a trapezium of half the sum of its sides, and a loop's area is the sum of its "
+            "heights (whole squares and the halves cut by the sloping sides)",
+            [("Loop",), ("Side of the mean line",), ("Heights at the grid lines inside it, squares",),
+             ("Area, squares",)],
+            [[str(i + 1), sides[i], " + ".join(map(str, h)), f"@n{i + 1}"] for i, h in enumerate(profiles)])
+    signed = fw.alternate(counted, first_above=above)
+    dA, largest = _levels(d, signed, False, "", "squares of the grid",
+                          note="greatest less least energy, in squares of the grid")
+    e = d.step("e", fw.energy_per_area(p.Ts, p.As), "J", symbol=r"e",
+               formula=r"@Ts\,@As", note="one square of the grid: its torque × its crank angle in radians")
+    delta_e = d.step("dE", dA * e, "J", symbol=r"\Delta E", formula=r"@dA\,@e")
+    d.mistake("dE", "one_scale_only", dA * p.Ts)
+    d.mistake("dE", "angle_scale_in_degrees", dA * p.Ts * math.degrees(p.As))
+    d.mistake("dE", "largest_loop", largest * e, if_apart=True)
+    for slip, count_by in (("whole_squares_only", grid_loops.whole_squares),
+                           ("part_squares_as_whole", grid_loops.touched_squares)):
+        # the energies at A to I from the miscounted loops (they no longer close the cycle at J)
+        levels = [0.0, *accumulate(fw.alternate([count_by(h) for h in profiles], first_above=above)[:-1])]
+        d.mistake("dE", slip, (max(levels) - min(levels)) * e, if_apart=True)
+    _rim(p, d, delta_e)
 
 
 # ---- Example 3.2: a torque-time diagram ----------------------------------------------------------
