@@ -84,3 +84,14 @@ def loop_area_reading(v) -> dict:
     return {"areas": areas, "heights": heights, "first": first,
             "Ts": per_square(up), "As": math.radians(per_square(along))}
 
+
+def crank_angles(v) -> list[float]:
+    """The four cranks' angles (rad) read off the end view, as a protractor reads them: from the scale's zero
+    (straight up, the line of stroke) clockwise, the direction the figure's arrow turns, to the nearest degree."""
+    out = []
+    for i in range(1, 5):
+        (spoke,) = elements(figure_svg(v), f"spoke-{i}")
+        dx = float(spoke.get("x2")) - float(spoke.get("x1"))
+        dy = float(spoke.get("y2")) - float(spoke.get("y1"))
+        out.append(math.radians(round(math.degrees(math.atan2(dx, -dy))) % 360))
+    return out

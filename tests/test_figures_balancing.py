@@ -187,7 +187,10 @@ def _numbers(strings):
 def test_no_answer_is_printed_on_a_figure(bank, seed):
     for template in balancing_templates(bank):
         variant = make_variant(template, seed)
-        shown = texts(figure_svg(variant))
+        svg = figure_svg(variant)
+        # a degree scale's numbers are what an angle is read against, not an answer written down
+        scale = [t.text for t in elements(svg, "scale-label", "text")]
+        shown = [t for t in texts(svg) if t not in scale]
         printed = _numbers([variant.statement, *variant.asks.values()])
         on_figure = _numbers(shown)
         for answer in variant.answers.values():
@@ -203,3 +206,31 @@ def test_no_answer_is_printed_on_a_figure(bank, seed):
                 for sig in (3, 4):
                     number = units.format_number(x, sig)
                     assert number in printed or number not in on_figure, (template.id, seed, answer.part.id, number)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_cranks_to_be_read_stand_on_their_scale_s_divisions_and_no_angle_is_written(bank, seed):
+    # the end view is the given of the crank angles: each crank points at its angle on the degree scale (0°
+    # straight up, clockwise), that angle is one of the scale's long ticks, and the only numbers written are
+    # the scale's own (every 30°) and the pitch
+    variant = make_variant(bank.get("balancing.inline_engine_angles_read"), seed)
+    svg = figure_svg(variant)
+    cx, cy = _end_view_centre(svg)
+    marks = elements(svg, "scale-tick")
+    widest = max(float(t.get("stroke-width")) for t in marks)
+    long_ticks = {round(math.degrees(math.atan2(float(t.get("x1")) - cx, cy - float(t.get("y1"))))) % 360
+                  for t in marks if float(t.get("stroke-width")) == widest}
+    assert long_ticks == set(range(0, 360, 10))
+    for i in range(1, 5):
+        drawn = round(spoke_angle(svg, str(i)) + 90) % 360
+        assert drawn == round(variant.param(f"theta{i}").si * 180 / math.pi) % 360 and drawn in long_ticks
+    numbers = [t for t in texts(svg) if re.search(r"\d", t)]
+    allowed = {str(k) for k in range(30, 360, 30)} | {"1", "2", "3", "4", variant.param("a").text + " mm",
+                                                     "0° (line of stroke)",
+                                                     "angles from crank 1 in the direction of rotation, scale in degrees"}
+    assert set(numbers) <= allowed, set(numbers) - allowed
+
+
+def _end_view_centre(svg):
+    (scale,) = elements(svg, "scale", "circle")
+    return float(scale.get("cx")), float(scale.get("cy"))

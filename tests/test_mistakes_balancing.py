@@ -113,3 +113,22 @@ def test_a_wrong_angle_of_d_carries_forward_to_b(bank):
     theta_b, mass_b = (answer_for(variant.template.part(k), again).value for k in "cd")
     result = grade_variant(variant, {"b": f"{wrong} deg", "c": f"{theta_b:.3f} deg", "d": f"{mass_b:.4f} kg"})
     assert [r.status for r in result.parts] == ["blank", "wrong", "carried", "carried"]
+
+
+def test_a_crank_angle_misread_off_the_end_view_is_named_and_carried_into_the_polygons(bank):
+    import math
+
+    from exgen.solve.variant import answer_for, rerun
+
+    variant = make_variant(bank.get("balancing.inline_engine_angles_read"), 3)
+    theta3 = variant.answers["b"].value
+    against = grade(variant, "b", f"{360 - theta3:g} deg")
+    assert against.status == "wrong" and against.mistake == "against_rotation"
+    misread = (theta3 + 10) % 360                         # a division out: wrong, but the polygons follow it
+    again = rerun(variant, {"read3": math.radians(misread)})
+    polygons = {k: answer_for(variant.template.part(k), again).value for k in "defg"}
+    units = {"d": "N", "e": "N m", "f": "N", "g": "N m"}
+    result = grade_variant(variant, {"b": f"{misread:g} deg",
+                                     **{k: f"{polar.magnitude:.6g} {units[k]} at {polar.angle_deg:.4f} deg"
+                                        for k, polar in polygons.items()}})
+    assert [r.status for r in result.parts] == ["blank", "wrong", "blank", "carried", "carried", "carried", "carried"]

@@ -15,6 +15,7 @@ import math
 
 import pytest
 
+import figure_readings
 from sheet_values import check_answers, check_mistakes, printed
 
 PI = math.pi
@@ -225,7 +226,24 @@ def inline_engine_unbalance(v):
 def inline_engine_directions(v):
     """Every polygon open: each size with the direction that closes it, and the slips on both."""
     g = printed(v, "theta1", "theta2", "theta3", "theta4", "m", "r", "l", "a", "N")
-    angles = [g.theta1, g.theta2, g.theta3, g.theta4]
+    return _directions(g, [g.theta1, g.theta2, g.theta3, g.theta4])
+
+
+def inline_engine_angles_read(v):
+    """The same with the crank angles read off the end view's degree scale: each angle read is an answer
+    (slips: read against the rotation, or from the crank before), then the polygons from those angles."""
+    g = printed(v, "m", "r", "l", "a", "N")
+    angles = figure_readings.crank_angles(v)
+    answers, mistakes = _directions(g, angles)
+    answers = {chr(ord(part) + 3): value for part, value in answers.items()}
+    mistakes = {chr(ord(part) + 3): value for part, value in mistakes.items()}
+    for part, i in zip("abc", (1, 2, 3)):
+        answers[part] = angles[i]
+        mistakes[part] = {"against_rotation": 2 * PI - angles[i], "angle_between_cranks": (angles[i] - angles[i - 1]) % (2 * PI)}
+    return answers, mistakes
+
+
+def _directions(g, angles):
     x = centred(4, g.a)
     n = g.l / g.r
     primary = g.m * g.r * g.N ** 2
@@ -374,7 +392,8 @@ ORACLES = {
     "balancing.correction_plane_position": correction_plane_position,
     "balancing.bearing_reactions": bearing_reactions, "balancing.inline_engine_unbalance": inline_engine_unbalance,
     "balancing.inline_engine_firing": inline_engine_firing,
-    "balancing.inline_engine_directions": inline_engine_directions, "balancing.inline_primary_balance": inline_primary_balance,
+    "balancing.inline_engine_directions": inline_engine_directions,
+    "balancing.inline_engine_angles_read": inline_engine_angles_read, "balancing.inline_primary_balance": inline_primary_balance,
     "balancing.radial_engine": radial_engine, "balancing.v_engine": v_engine,
 }
 

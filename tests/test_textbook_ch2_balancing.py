@@ -204,6 +204,24 @@ def test_example_2_6_every_direction_of_its_irregular_cranks(bank):
     assert not any("constraint" in w or "closes" in w or "apart" in w for w in warnings)
 
 
+def test_example_2_6_with_its_crank_angles_read_off_the_end_view(bank):
+    # Figure 2.8's cranks, from crank 1 (at the text's 100 deg): 290, 200 and 100 deg. The angles read are the
+    # answers of (a)-(c); the polygons give the printed template's answers, and the text's directions less
+    # crank 1's 100 deg (the secondary's less 200 deg: its cranks stand at 2θ).
+    from_crank_1 = {**EXAMPLE_2_6, "theta1": "0 deg", "theta2": "290 deg", "theta3": "200 deg", "theta4": "100 deg"}
+    read, _, warnings = answers(bank, "balancing.inline_engine_angles_read",
+                                **{k: v for k, v in from_crank_1.items() if k != "theta1"})
+    printed_values, _, _ = answers(bank, "balancing.inline_engine_directions", **from_crank_1)
+    assert [read[k] for k in "abc"] == pytest.approx([290, 200, 100])
+    for part, same_part in zip("defg", "abcd"):
+        assert polar_is(read[part], printed_values[same_part].magnitude, printed_values[same_part].angle_deg)
+    assert polar_is(read["d"], 0.374762, 227.60 - 100)
+    assert polar_is(read["e"], 2.986758, 63.51 - 100)
+    assert polar_is(read["f"], 0.347296 / 3, 300.0 - 200)
+    assert polar_is(read["g"], 2.147418 / 3, 196.54 - 200)
+    assert not any("constraint" in w or "closes" in w or "apart" in w for w in warnings)
+
+
 def test_example_2_8_three_cylinder_radial(bank):
     # Example 2.8: stroke 120 mm, rod 180 mm, 2 kg, 2000 rpm. Primary direct 3 (m/2) r w^2 = 7895.68 N,
     # reverse free; secondary direct free, reverse 3 (m/2)(2w)^2 r/4n = 2631.89 N.

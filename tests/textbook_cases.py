@@ -33,6 +33,7 @@ CASES = [
     ('Example 2.3', 'balancing.complete_balance_position', {'mA': '7.5 kg', 'rA': '30 mm', 'thetaA': '270 deg', 'rB': '36 mm', 'mC': '5 kg', 'rC': '39 mm', 'mD': '4 kg', 'rD': '33 mm', 'lAB': '0.4 m', 'lBC': '0.5 m'}),
     ('Example 2.4', 'balancing.bearing_reactions', {'mA': '8 kg', 'rA': '60 mm', 'mB': '10 kg', 'rB': '50 mm', 'thetaB': '60 deg', 'mC': '6 kg', 'rC': '40 mm', 'thetaC': '270 deg', 'a': '0.2 m', 'b': '0.5 m', 'c': '0.3 m', 'e': '0.3 m', 'N': '90 rpm'}),
     ('Example 2.6', 'balancing.inline_engine_unbalance', {'theta1': '100 deg', 'theta2': '30 deg', 'theta3': '300 deg', 'theta4': '200 deg', 'm': '1 kg', 'r': '1 m', 'l': '3 m', 'a': '1 m', 'N': '1 rad/s'}),
+    ('Example 2.6 (crank angles read from the figure, from crank 1)', 'balancing.inline_engine_angles_read', {'theta2': '290 deg', 'theta3': '200 deg', 'theta4': '100 deg', 'm': '1 kg', 'r': '1 m', 'l': '3 m', 'a': '1 m', 'N': '1 rad/s'}),
     ('Example 2.7', 'balancing.inline_engine_firing', {'firing': '1-3-5-6-4-2', 'strokes': '4', 'm': '1 kg', 'r': '1 m', 'l': '3 m', 'a': '1 m', 'N': '1 rad/s'}),
     ('Example 2.8', 'balancing.radial_engine', {'ncyl': '3', 'S': '120 mm', 'l': '180 mm', 'm': '2 kg', 'N': '2000 rpm'}),
     ('Example 2.9', 'balancing.v_engine', {'V': '60 deg', 'S': '140 mm', 'l': '210 mm', 'm': '1.2 kg', 'N': '2400 rpm'}),

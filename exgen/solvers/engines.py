@@ -143,8 +143,26 @@ def _apart(angles) -> bool:
 def inline_engine_directions(p, d):
     """Example 2.6 itself: four cranks at any angles, so every polygon is left open; the size of each
     unbalanced force and couple and the direction of the force or couple that balances it."""
-    names = [f"theta{i}" for i in range(1, 5)]
-    angles = [getattr(p, name) for name in names]
+    _directions(p, d, [f"theta{i}" for i in range(1, 5)])
+
+
+def inline_engine_angles_read(p, d):
+    """Example 2.6 with the crank angles read off the end view's degree scale (Figure 2.8 gives them as a
+    drawing): each angle read is a step (an answer, carried forward into the polygons), then the same work."""
+    for i in range(2, 5):
+        theta = getattr(p, f"theta{i}")
+        d.step(f"read{i}", theta, "rad", symbol=rf"\theta_{i}",
+               note=f"crank {i}, read off the end view's scale from crank 1 in the direction of rotation")
+        d.mistake(f"read{i}", "against_rotation", 2 * PI - theta, if_apart=True)
+        if i > 2:
+            d.mistake(f"read{i}", "angle_between_cranks", (theta - getattr(p, f"theta{i - 1}")) % (2 * PI),
+                      if_apart=True)
+    _directions(p, d, ["theta1", "read2", "read3", "read4"])
+
+
+def _directions(p, d, names):
+    """The polygons of four cranks at the angle params or steps `names` (see inline_engine_directions)."""
+    angles = [d.value_of(name) for name in names]
     d.require(_apart(angles) and _apart([2 * a for a in angles]), "two cranks too close to tell apart on a drawing")
     positions = me.centred_positions(4, p.a)
     results = _crank_polygons(d, p, names, positions, with_angles=True)
