@@ -66,6 +66,21 @@ def test_a_polar_answer_is_two_numbers_for_half_the_marks_each_and_its_mistakes_
     assert direction.values == (30.0, -330.0, 390.0)
 
 
+def test_a_polar_gap_names_no_slip_whose_window_meets_the_right_one():
+    """A gap reads one half: a size just outside the tolerance, typed with the right angle, must not be told
+    of a slip whose size is as near (it differs in its angle), nor an angle of a slip whose angle is."""
+    kind = answer_type("polar")
+    part = kind.sample_part()                      # 1 % in size, 0.5° in angle
+    key = Polar(100.0, 30.0)
+    mistakes = {"near_size": (Polar(101.5, 200.0), "near in size"), "near_angle": (Polar(300.0, 30.8), "near in angle"),
+                "apart": (Polar(103.0, 32.0), "apart in both")}
+    size, direction = kind.lms_gaps(part, key, mistakes)
+    assert [w.name for w in size.wrong] == ["near_angle", "apart"]
+    assert [w.name for w in direction.wrong] == ["near_size", "apart"]
+    just_out = key.magnitude * (1 + 1.001 * part.tol.rel)
+    assert not any(abs(just_out - w.value) <= w.tolerance for w in size.wrong)
+
+
 def test_a_choice_carries_the_first_mistake_that_leads_to_each_wrong_choice():
     kind = answer_type("choice")
     part = kind.sample_part()

@@ -198,8 +198,15 @@ class PolarType(AnswerType):
         def angle_tol(v: float) -> float:
             return part.tol.abs
 
-        sizes = {n: (m.magnitude, say) for n, (m, say) in mistakes.items() if not numeric(m.magnitude, value.magnitude, part.tol.rel)}
-        angles = {n: (m.angle_deg, say) for n, (m, say) in mistakes.items() if not angle(m.angle_deg, value.angle_deg, 0.0, part.tol.abs)}
+        # A gap sees one half only: it names a slip only where that half's window and the right one's do not
+        # meet, so a size just outside the tolerance, typed with the right angle, is not told of a slip that
+        # differs in its angle alone (exgen's grader, reading both halves, names none there either).
+        def sizes_meet(size: float) -> bool:
+            return abs(size - value.magnitude) <= size_tol(size) + size_tol(value.magnitude)
+
+        sizes = {n: (m.magnitude, say) for n, (m, say) in mistakes.items() if not sizes_meet(m.magnitude)}
+        angles = {n: (m.angle_deg, say) for n, (m, say) in mistakes.items()
+                  if not angle(m.angle_deg, value.angle_deg, 0.0, 2 * part.tol.abs)}
         turns = (value.angle_deg - 360.0, value.angle_deg + 360.0)
         half = Fraction(1, 2)
         return (
