@@ -67,9 +67,12 @@ def compound_pendulum(v):
     i_g = g.m * g.k_G ** 2
     i_o = i_g + g.m * g.h ** 2                                # about the knife edge
     w = omega(g.m * G * g.h, i_o)                            # restoring moment m g h θ
-    answers = {"a": i_o, "b": hz(w), "c": i_o / (g.m * g.h)}
+    answers = {"a": i_o, "b": hz(w), "c": i_o / (g.m * g.h),
+               "d": lambda theta: -six(g.m * G * g.h / i_o) * theta}       # I_O theta'' + m g h theta = 0
     mistakes = {"a": {"wrong_axis": i_g}, "b": {"omega_for_f": w, "wrong_axis": hz(omega(g.m * G * g.h, i_g))},
-                "c": {"wrong_axis": i_g / (g.m * g.h)}}
+                "c": {"wrong_axis": i_g / (g.m * g.h)},
+                "d": {"wrong_axis": lambda theta: -six(g.m * G * g.h / i_g) * theta,
+                      "sqrt_kept": lambda theta: -six(w) * theta}}
     return answers, mistakes
 
 
@@ -93,11 +96,12 @@ def torsional_shaft_disc(v):
     q = g.G * polar / g.l
     w = omega(q, inertia)
     across = g.m * g.D ** 2 / 16                             # about a diameter: ¼ m r²
-    answers = {"a": inertia, "b": q, "c": hz(w)}
+    answers = {"a": inertia, "b": q, "c": hz(w), "d": lambda theta: -six(q / inertia) * theta}   # I theta'' + q theta = 0
     mistakes = {"a": {"wrong_axis": across, "diameter_for_radius": g.m * g.D ** 2 / 2},
                 "b": {"bending_for_polar": g.G * bending / g.l, "radius_for_diameter": g.G * math.pi * (g.d / 2) ** 4 / 32 / g.l},
                 "c": {"omega_for_f": w, "sqrt_missing": q / inertia / TWO_PI, "wrong_axis": hz(omega(q, across)),
-                      "bending_for_polar": hz(omega(g.G * bending / g.l, inertia))}}
+                      "bending_for_polar": hz(omega(g.G * bending / g.l, inertia))},
+                "d": {"wrong_axis": lambda theta: -six(q / across) * theta, "sqrt_kept": lambda theta: -six(w) * theta}}
     return answers, mistakes
 
 

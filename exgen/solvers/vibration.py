@@ -52,14 +52,17 @@ def simple_pendulum(p, d):
 
 def _pendulum_equation(p, d) -> None:
     """Eq. 6.8, m l² θ̈ + m g l θ = 0 for small angles, asked as θ̈ in θ."""
-    from ..answertypes.symbolic import Expression
-
-    def acceleration(coefficient: float) -> Expression:
-        return Expression.parse(f"-({coefficient:.6g})*theta", ("theta",))
-
     d.step("alpha_expr", acceleration(vb.G / p.l), symbol=r"\ddot{\theta}(\theta)",
            note=r"eq. 6.8: $m l^2\ddot\theta + m g l\,\theta = 0$ ($\sin\theta \approx \theta$), so $\ddot\theta = -(g/l)\,\theta$")
     d.mistake("alpha_expr", "sqrt_kept", acceleration(math.sqrt(vb.G / p.l)))
+
+
+def acceleration(coefficient: float):
+    """θ̈ = −c θ, an equation of motion solved for the angular acceleration, as a symbolic answer (c to six
+    figures, as the key prints it)."""
+    from ..answertypes.symbolic import Expression
+
+    return Expression.parse(f"-({coefficient:.6g})*theta", ("theta",))
 
 
 def compound_pendulum(p, d):
@@ -79,6 +82,12 @@ def compound_pendulum(p, d):
     d.step("L", i_o / (p.m * p.h), "m", symbol="L", formula=r"\frac{@I_O}{@m\,@h}",
            note=r"the simple pendulum with the same $\omega_n$: $g/L = m g h/I_O$")
     d.mistake("L", "wrong_axis", i_g / (p.m * p.h))
+    restoring = p.m * vb.G * p.h
+    d.step("alpha_expr", acceleration(restoring / i_o), symbol=r"\ddot{\theta}(\theta)",
+           note=r"$I_O\ddot\theta + m g h\,\theta = 0$ (eqs. 6.2-6.3, $\sin\theta \approx \theta$), "
+                r"so $\ddot\theta = -(m g h/I_O)\,\theta$")
+    d.mistake("alpha_expr", "wrong_axis", acceleration(restoring / i_g))
+    d.mistake("alpha_expr", "sqrt_kept", acceleration(math.sqrt(restoring / i_o)))
 
 
 # ---- §6.3 and §6.5: springs and a mass -------------------------------------------------------
@@ -128,6 +137,10 @@ def torsional_shaft_disc(p, d):
     d.mistake("f_n", "wrong_axis", vb.frequency(vb.natural_speed(q, p.m * r ** 2 / 4)))
     d.mistake("f_n", "bending_for_polar", vb.frequency(vb.natural_speed(p.G * vb.second_moment(p.d) / p.l, inertia)))
     d.require(2 <= d.value_of("f_n") <= 200, "a torsional frequency outside 2-200 Hz")
+    d.step("alpha_expr", acceleration(q / inertia), symbol=r"\ddot{\theta}(\theta)",
+           note=r"$I\ddot\theta + q\,\theta = 0$ (eq. 6.27), so $\ddot\theta = -(q/I)\,\theta$")
+    d.mistake("alpha_expr", "wrong_axis", acceleration(q / (p.m * r ** 2 / 4)))
+    d.mistake("alpha_expr", "sqrt_kept", acceleration(math.sqrt(q / inertia)))
 
 
 def stepped_shaft(p, d):
