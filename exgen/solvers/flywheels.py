@@ -59,10 +59,10 @@ def _levels(d, signed: list[float], name_extremes: bool, unit: str, measure: str
     return dA, max(abs(a) for a in signed)
 
 
-def _energy(p, d, dA: float, largest: float) -> float:
-    """ΔE in joules from ΔA in mm², with the slips of the scales."""
-    e = d.step("e", fw.energy_per_area(p.Ts, p.As), "J/mm^2", symbol=r"e",
-               formula=r"@Ts\,@As", note="one mm² of the diagram: torque per mm × radians per mm")
+def _energy(p, d, dA: float, largest: float, per: str = "J/mm^2",
+            note: str = "one mm² of the diagram: torque per mm × radians per mm") -> float:
+    """ΔE in joules from ΔA in mm² (or in squares of a grid, `per` "J"), with the slips of the scales."""
+    e = d.step("e", fw.energy_per_area(p.Ts, p.As), per, symbol=r"e", formula=r"@Ts\,@As", note=note)
     delta_e = d.step("dE", dA * e, "J", symbol=r"\Delta E", formula=r"@dA\,@e")
     d.mistake("dE", "one_scale_only", dA * p.Ts)
     d.mistake("dE", "angle_scale_in_degrees", dA * p.Ts * math.degrees(p.As))
@@ -148,12 +148,8 @@ def loop_area_reading(p, d):
     signed = fw.alternate(counted, first_above=above)
     dA, largest = _levels(d, signed, False, "", "squares of the grid",
                           note="greatest less least energy, in squares of the grid")
-    e = d.step("e", fw.energy_per_area(p.Ts, p.As), "J", symbol=r"e",
-               formula=r"@Ts\,@As", note="one square of the grid: its torque × its crank angle in radians")
-    delta_e = d.step("dE", dA * e, "J", symbol=r"\Delta E", formula=r"@dA\,@e")
-    d.mistake("dE", "one_scale_only", dA * p.Ts)
-    d.mistake("dE", "angle_scale_in_degrees", dA * p.Ts * math.degrees(p.As))
-    d.mistake("dE", "largest_loop", largest * e, if_apart=True)
+    delta_e = _energy(p, d, dA, largest, "J", note="one square of the grid: its torque × its crank angle in radians")
+    e = d.value_of("e")
     for slip, count_by in (("whole_squares_only", grid_loops.whole_squares),
                            ("part_squares_as_whole", grid_loops.touched_squares)):
         # the energies at A to I from the miscounted loops (they no longer close the cycle at J)
