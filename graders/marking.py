@@ -8,6 +8,7 @@ for each kind of answer is its answer type's (exgen.answertypes).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import Any, Mapping
 
@@ -48,7 +49,7 @@ class QuestionMarker:
         self.aliases = aliases or {}
         self.variant = question.variant
         self.readings: dict[str, Given] = {}  # readable answers of the right kind, by part id
-        self.right: set[str] = set()          # parts right against the key itself
+        self.right: set[str] = set()          # parts right against the key itself (within tolerance)
         self._reruns: dict[tuple, Derivation | str] = {}  # the derivation, or why there is none
 
     def mark(self, answers: Mapping[str, str], problems: Mapping[str, str] | None = None) -> QuestionResult:
@@ -113,12 +114,24 @@ class QuestionMarker:
         return result.make(WRONG, kind.wrong_message(given, part) + (f". {why}" if why else ""))
 
     def _carried(self, part: PartSpec) -> tuple[Answer, dict[str, Any], list[str]] | _NotCarried | None:
-        """The part's answer re-derived from the student's answers to the parts it uses, if any is wrong;
-        None where nothing is carried by rule (no wrong earlier answer, or a trivial zero), and the reason
-        where the working could not be carried on from them."""
-        wrong = [u for u in part.uses if u in self.readings and u not in self.right]
-        if not wrong or any(_degenerate(self.readings[u].value, self.variant.answers[u].value) for u in wrong):
+        """The part's answer re-derived from the student's answers to the parts it uses, if any is not the
+        key's own value: wrong, or right within its tolerance but not exact (a length read off a drawing, an
+        answer rounded), since a later part worked from such an answer can fall outside its own tolerance.
+        None where nothing is carried by rule (every earlier answer the key's, or a trivial zero), and the
+        reason where the working could not be carried on from a wrong one."""
+        differing = [u for u in part.uses if u in self.readings
+                     and (u not in self.right or _differs(self.readings[u].value, self.variant.answers[u].value))]
+        wrong = [u for u in differing if u not in self.right]
+        if not differing or any(_degenerate(self.readings[u].value, self.variant.answers[u].value) for u in wrong):
             return None
+        worked = self._worked_from(part)
+        if isinstance(worked, str):   # earlier answers all right: a working that cannot go on is no one's fault
+            return _NotCarried(wrong, worked) if wrong else None
+        return worked and (*worked, wrong or differing)   # the message names the wrong ones, if any
+
+    def _worked_from(self, part: PartSpec) -> tuple[Answer, dict[str, Any]] | str | None:
+        """The part's answer and its slips' values worked from the student's answers to the parts it uses;
+        why the working cannot go on from them; or None where it gives a trivial zero."""
         template = self.variant.template
         overrides = {}
         try:
@@ -127,18 +140,18 @@ class QuestionMarker:
                     used = template.part(used_id)
                     overrides.update(answer_type(used).overrides(used, self.readings[used_id].value, self.variant))
         except (ExgenError, ArithmeticError) as exc:  # a value its step cannot take (a unit, an overflow)
-            return _NotCarried(wrong, _reason(exc))
+            return _reason(exc)
         derivation = self._rerun(overrides)
         if isinstance(derivation, str):
-            return _NotCarried(wrong, derivation)
+            return derivation
         try:
             carried = answer_for(part, derivation)
             found = mistakes_for(part, derivation)
         except ExgenError as exc:  # the working gives no answer of the asked kind from them
-            return _NotCarried(wrong, _reason(exc))
+            return _reason(exc)
         if _degenerate(carried.value, self.variant.answers[part.id].value):
             return None
-        return carried, found, wrong
+        return carried, found
 
     def _rerun(self, overrides: dict[str, Any]) -> Derivation | str:
         """The derivation worked from the student's values, or why it cannot be (the solver refuses
@@ -199,6 +212,13 @@ def _key(value) -> Any:
         return value
     except TypeError:
         return repr(value)
+
+
+def _differs(value, key) -> bool:
+    """Whether an answer read as right is other than the key's own value (beyond float noise)."""
+    if isinstance(value, (int, float)) and isinstance(key, (int, float)):
+        return not math.isclose(value, key, rel_tol=1e-9, abs_tol=1e-300)
+    return _key(value) != _key(key)
 
 
 def _degenerate(value, key) -> bool:

@@ -93,14 +93,15 @@ def cases() -> list[Case]:
     for question in every_template_pool().questions:
         for index, variant in enumerate(question.variants, 1):
             item = make_item(question, index, variant, LATEX_HTML, PLUGINFILE)
-            marker = QuestionMarker(Question(question.number, question.slot, variant, question.points))
+            asked = Question(question.number, question.slot, variant, question.points)
             for item_part in item.exported_parts:
                 part = variant.template.part(item_part.id)
                 for gap in item_part.gaps:
                     said = {w.name: html_text(w.message) for w in gap.wrong}
                     for probe in probes(variant, part, gap):
-                        result = marker.part(part, probe.answer)
-                        named = marker.part(part, probe.whole).mistake if probe.whole else result.mistake
+                        # each probe alone, as a learning system marks it: no earlier answer to carry forward
+                        result = QuestionMarker(asked).part(part, probe.answer)
+                        named = QuestionMarker(asked).part(part, probe.whole).mistake if probe.whole else result.mistake
                         out.append(Case(item.ident, part, gap, probe, result.status == CORRECT, said.get(named)))
     return out
 
