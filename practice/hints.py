@@ -83,7 +83,7 @@ def hint_ladder(variant, part_id: str, worked=None, answered: frozenset[str] = f
 def shown(line: WorkLine, withheld: Withheld, result: bool = True) -> WorkLine | None:
     """The line with every number that would give an answer away taken out (and, without `result`,
     its value too); None when nothing of it is left to show."""
-    values = line.values if result and not any(withheld.gives_away(_as_shown(q.value)) for q in line.values) else ()
+    values = line.values if result and not any(withheld.gives_away(_as_shown(q.value, q.sig)) for q in line.values) else ()
     substituted = _substituted(line, withheld)
     if line.formula is None and substituted is None:
         return None if not values else dataclasses.replace(line, note=_note(line, withheld), parts=())
@@ -111,11 +111,11 @@ def _note(line: WorkLine, withheld: Withheld) -> str:
     return "" if line.note and withheld.in_text(line.note) else line.note
 
 
-def _as_shown(value):
-    """A value as a worked line writes it (four figures), so that what is checked is what is read."""
+def _as_shown(value, sig: int):
+    """A value as a worked line writes it (to its `sig` figures), so that what is checked is what is read."""
     if isinstance(value, bool) or not isinstance(value, float):
         return value
-    mantissa, exponent = number_parts(value)
+    mantissa, exponent = number_parts(value, sig)
     return float(mantissa) * 10.0 ** int(exponent or 0)
 
 
