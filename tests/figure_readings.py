@@ -95,3 +95,71 @@ def crank_angles(v) -> list[float]:
         dy = float(spoke.get("y2")) - float(spoke.get("y1"))
         out.append(math.radians(round(math.degrees(math.atan2(dx, -dy))) % 360))
     return out
+
+
+# ---- linkages drawn to scale (§7.9 question 1, Problem 7.1) ----------------------------------------
+
+def _centre(e) -> tuple[float, float]:
+    return float(e.get("cx")), float(e.get("cy"))
+
+
+def _joints(svg: str) -> dict[str, tuple[float, float]]:
+    """Each lettered joint's centre (a pin's circle, or the dot of a point), by its letter: each label goes to
+    the joint nearest it, the nearest pairs first, as a reader matches letters to pins."""
+    spots = [_centre(c) for c in root(svg).iter(f"{SVG}circle") if set(c.get("class", "").split()) & {"pin", "point"}]
+    spots = list(dict.fromkeys((round(x, 2), round(y, 2)) for x, y in spots))      # a ground pivot's pin drawn twice
+    shift = {"start": 0.5, "middle": 0.0, "end": -0.5}       # a label's middle, from its anchor (8.5 px a letter)
+    labels = [(t.text.split()[0], float(t.get("x")) + shift[t.get("text-anchor", "middle")] * 8.5 * len(t.text),
+               float(t.get("y")) - 5) for t in elements(svg, "joint-label", "text")]
+    pairs = sorted((math.dist((x, y), spot), letter, spot) for letter, x, y in labels for spot in spots)
+    found: dict[str, tuple[float, float]] = {}
+    for _, letter, spot in pairs:
+        if letter not in found and spot not in found.values():
+            found[letter] = spot
+    return found
+
+
+def _metres_per_px(svg: str) -> float:
+    """The scale the one dimension sets: its printed length over the length of its line, the distance between
+    its two extension lines' outer ends (each drawn the same 4 px past the dimension line)."""
+    ends = [(float(e.get("x2")), float(e.get("y2"))) for e in elements(svg, "extension")]
+    (label,) = elements(svg, "dim", "text")
+    value, unit = label.text.split()
+    return float(value) * {"mm": 1e-3, "m": 1.0}[unit] / math.dist(*ends)
+
+
+def _world(point, origin) -> tuple[float, float]:
+    """Page px (y down) to a frame with y up, from `origin`."""
+    return point[0] - origin[0], origin[1] - point[1]
+
+
+def _to_10_mm(length_m: float) -> float:
+    return round(length_m * 100) / 100
+
+
+def suspension_reading(v) -> dict:
+    """The suspension's lengths (m) read off its drawing with the dimension AD as the scale, each rounded to a
+    whole 10 mm as the sheet says; and which side of B -> D its pin C, and of B -> C its point P, is drawn on."""
+    svg = figure_svg(v)
+    joints = _joints(svg)
+    scale = _metres_per_px(svg)
+    length = {name: _to_10_mm(math.dist(joints[name[0]], joints[name[1]]) * scale)
+              for name in ("AB", "BC", "DC", "CP", "BP")}
+    w = {k: _world(p, joints["D"]) for k, p in joints.items()}
+
+    def left_of(a, b, point) -> bool:
+        return (b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0]) > 0
+
+    return {**length, "C_left_of_BD": left_of(w["B"], w["D"], w["C"]), "P_left_of_BC": left_of(w["B"], w["C"], w["P"])}
+
+
+def slider_crank_reading(v) -> dict:
+    """The crank AB, the piston CP and the offset of the line of slide below A (m), read off the drawing with
+    the dimension BC as the scale and rounded to a whole 10 mm."""
+    svg = figure_svg(v)
+    joints = _joints(svg)
+    scale = _metres_per_px(svg)
+    (slide,) = elements(svg, "line-of-slide")
+    return {"AB": _to_10_mm(math.dist(joints["A"], joints["B"]) * scale),
+            "CP": _to_10_mm(math.dist(joints["C"], joints["P"]) * scale),
+            "offset": _to_10_mm((float(slide.get("y1")) - joints["A"][1]) * scale)}

@@ -3,6 +3,7 @@ import math
 
 import pytest
 
+from exgen.figures.kinematic import DASH
 from exgen.figures.linkage_poses import joints
 from exgen.figures.linkages import (coupler_point, fourbar, fourbar_as_drawn, fourbar_both_roots, fourbar_circuits,
                                     synthesis, synthesis_construction, synthesis_three, synthesis_three_construction)
@@ -43,7 +44,8 @@ def test_every_value_a_sheet_figure_prints_is_given_data(bank):
     for template_id in ("linkages.fourbar_position", "linkages.coupler_point", "linkages.slider_crank",
                         "linkages.grashof", "linkages.rocker_swing", "linkages.actuator_swing",
                         "linkages.two_position_synthesis", "linkages.three_position_synthesis",
-                        "linkages.fourbar_both_roots", "linkages.slider_crank_both_roots"):
+                        "linkages.fourbar_both_roots", "linkages.slider_crank_both_roots",
+                        "linkages.coupler_point_reading", "linkages.slider_crank_reading"):
         for seed in range(8):
             variant = make_variant(bank.get(template_id), seed)
             given = {str(p) for p in variant.params}
@@ -112,3 +114,39 @@ def test_mobility_diagram_numbers_every_link(bank, template_id, seed):
     links = variant.answers["a"].value
     assert moving == list(range(2, links + 1))
     assert any(n == "1" and cls == "ground-number" for n, cls in numbers)
+
+
+READINGS = {"linkages.coupler_point_reading": ("yA", {"AB": "AB", "BC": "BC", "DC": "DC", "CP": "PC", "BP": "PB"}),
+            "linkages.slider_crank_reading": ("L3", {"AB": "AB", "offset": "offset", "CP": "piston"})}
+
+
+@pytest.mark.parametrize("template_id", sorted(READINGS))
+@pytest.mark.parametrize("seed", range(8))
+def test_a_linkage_to_be_measured_is_drawn_to_scale_with_one_dimension_and_no_other_length(bank, template_id, seed):
+    # what a reader measures off the drawing, scaled by its one dimension, is what was drawn; the only numbers
+    # on it are that dimension, the joint D's coordinates and the crank angle a slider-crank is drawn at
+    import figure_readings
+
+    variant = make_variant(bank.get(template_id), seed)
+    dimension, drawn = READINGS[template_id]
+    svg = _sheet_figure(variant)
+    read = (figure_readings.suspension_reading if "coupler" in template_id else figure_readings.slider_crank_reading)(variant)
+    assert {k: read[k] for k in drawn} == pytest.approx({k: float(variant.param(p).si) for k, p in drawn.items()})
+    numbers = {t for t in texts(svg) if any(ch.isdigit() for ch in t)}
+    allowed = {str(variant.param(dimension)), "D (0, 0)"} | ({str(variant.param("drawn"))} if "slider" in template_id else set())
+    assert numbers <= allowed and str(variant.param(dimension)) in numbers, numbers - allowed
+
+
+@pytest.mark.parametrize("template_id", sorted(READINGS))
+def test_a_measured_linkage_s_key_draws_the_position_asked_with_the_lengths_read(bank, template_id):
+    from exgen.figures import key_figure_svgs
+
+    for seed in range(4):
+        variant = make_variant(bank.get(template_id), seed)
+        ((_, key),) = key_figure_svgs(variant)
+        lengths = {t for t in texts(key) if t.endswith(" mm")}
+        read = {f"{variant.answers[p.id].value:.4g} mm" for p in variant.template.parts if p.unit == "mm" and p.tol.rel == 0}
+        assert lengths == read
+        dashed = [e for e in root(key).iter(f"{SVG}line") if "link" in (e.get("class") or "").split()
+                  and e.get("stroke-dasharray") == DASH]
+        assert len(dashed) == 2, "the sheet's pose: its crank and its coupler or rocker, dashed"

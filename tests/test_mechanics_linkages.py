@@ -58,6 +58,26 @@ def test_four_bar_example_vector_method_in_its_own_frame():
     assert point == pytest.approx((-19.45, -13.50), abs=0.006)    # printed R_C = (-19.45, -13.50)
 
 
+def test_four_bar_example_by_the_vector_method_as_one_pose():
+    """The same suspension by rocker_pin (R_H, φ by the cosine law, θ4 = θ_H + φ) and plate_pose (the plate's
+    point C, our P): the text's θ4 and R_C, and the joints the text's loop places, A -> B -> C ending at D."""
+    b, c = lk.rocker_pin((0, 14), 8, 16, 10, rad(195), turn=1.0)
+    assert b == pytest.approx((-7.73, 11.93), abs=5e-3)                  # R_H
+    assert deg(math.atan2(c[1], c[0])) % 360 == pytest.approx(203.616, abs=5e-3)
+    assert (math.dist(b, c), math.hypot(*c)) == pytest.approx((16, 10))
+    pose = lk.plate_pose((0, 14), 8, 16, 10, rad(195), 1.0, 14, 28, left=False)
+    assert pose["P"] == pytest.approx((-19.45, -13.50), abs=0.006)       # printed R_C
+    assert (math.dist(pose["C"], pose["P"]), math.dist(pose["B"], pose["P"])) == pytest.approx((14, 28))
+    other = lk.plate_pose((0, 14), 8, 16, 10, rad(195), -1.0, 14, 28, left=False)["C"]
+    assert lk.side(b, (0, 0), c) < 0 < lk.side(b, (0, 0), other)        # turn +1: C on the right of B -> D
+
+
+def test_a_point_is_inside_a_triangle_only_within_its_three_edges():
+    corners = [(0, 0), (4, 0), (0, 3)]
+    assert lk.inside_triangle((1, 1), corners) and lk.inside_triangle((1, 1), corners[::-1])
+    assert not any(lk.inside_triangle(q, corners) for q in ((3, 2), (-1, 1), (2, -0.1), (5, 0)))
+
+
 def test_the_example_is_circuit_2_in_its_own_frame_and_circuit_1_mirrored():
     points = joints(14, 8, 16, 10, rad(195), circuit=2, origin=(0, 14), theta1=rad(-90))
     assert lk.side(points["B"], points["D"], points["C"]) < 0    # C on the right of B -> D

@@ -14,7 +14,8 @@ from exgen.mechanics import gyroscopes as gy
 from exgen.mechanics import linkages as lk
 from exgen.mechanics.mechanism_catalogue import build
 from exgen.mechanics.slider_cranks import slider_crank
-from sheet_values import G, check_mistakes, printed
+import figure_readings
+from sheet_values import G, check_answers, check_mistakes, printed
 
 RPM = 2 * math.pi / 60
 KMH = 3.6                  # a speed in m/s left as the number of km/h is this much too large
@@ -435,6 +436,77 @@ def mobility(v):
     return out
 
 
+# ---- linkages measured off their drawings: the lengths read back off the SVG (tests/figure_readings.py), then
+# the positions by intersecting circles, a method of this file's own
+
+
+def _circles_meet(p: complex, r: float, q: complex, s: float) -> tuple[complex, complex]:
+    """The two points r from p and s from q: the one on the left of p -> q first."""
+    gap = abs(q - p)
+    along = (r * r - s * s + gap * gap) / (2 * gap)
+    across = math.sqrt(max(r * r - along * along, 0.0))
+    u = (q - p) / gap
+    return p + along * u + 1j * u * across, p + along * u - 1j * u * across
+
+
+def suspension_read_worked(v):
+    """§7.9's suspension from its lengths as read, at the crank angle asked: C where the coupler's and the
+    rocker's circles meet on the side of B -> D the figure draws it, P where BP's and CP's circles meet on its
+    side of B -> C. Answers and slips."""
+    r = figure_readings.suspension_reading(v)
+    g = printed(v, "yA", "theta2")
+    b = complex(0.0, g.yA) + r["AB"] * cmath.exp(1j * g.theta2)
+    left, right = _circles_meet(b, r["BC"], 0j, r["DC"])
+    c, c_other = (left, right) if r["C_left_of_BD"] else (right, left)
+
+    def plate(pin: complex, same_side: bool = True) -> complex:
+        on_left, on_right = _circles_meet(b, r["BP"], pin, r["CP"])
+        return on_left if r["P_left_of_BC"] == same_side else on_right
+
+    p, theta4, theta3 = plate(c), cmath.phase(c), cmath.phase(c - b)
+    down = -math.pi / 2                                              # the ground line A -> D
+    answers = {"a": r["AB"], "b": r["BC"], "c": r["DC"], "d": r["CP"], "e": r["BP"], "f": theta4, "g": theta3,
+               "h": abs(cmath.phase((p - c) / (b - c))), "i": p.real, "j": p.imag}
+    other_p, side_p = plate(c_other), plate(c, same_side=False)
+    mistakes = {"f": {"wrong_circuit": cmath.phase(c_other), "relative_to_ground_line": theta4 - down},
+                "g": {"coupler_reversed": theta3 + math.pi, "relative_to_ground_line": theta3 - down,
+                      "wrong_circuit": cmath.phase(c_other - b)},
+                "h": {"wrong_vertex": abs(cmath.phase((p - b) / (c - b)))},           # the plate's angle at B
+                "i": {"wrong_circuit": other_p.real, "other_side": side_p.real},
+                "j": {"wrong_circuit": other_p.imag, "other_side": side_p.imag}}
+    return answers, mistakes
+
+
+def slider_crank_read_worked(v):
+    """Problem 7.1's slider-crank from its lengths as read, the crank turned: C where the coupler's circle
+    about B meets the line of slide, on the slider's side. Answers and slips."""
+    r = figure_readings.slider_crank_reading(v)
+    g = printed(v, "L3", "drawn", "turn", "sense", "slider")
+    sign = 1.0 if g.sense == "counter-clockwise" else -1.0
+    theta2 = g.drawn + sign * g.turn
+    b = r["AB"] * cmath.exp(1j * theta2)
+    way = 1.0 if g.slider == "right" else -1.0
+
+    def slider(offset: float, toward: float) -> complex:
+        return complex(b.real + toward * math.sqrt(g.L3 ** 2 - (offset + b.imag) ** 2), -offset)
+
+    c, behind, inline = slider(r["offset"], way), slider(r["offset"], -way), slider(0.0, way)
+    answers = {"a": r["AB"], "b": r["offset"], "c": r["CP"], "d": theta2, "e": cmath.phase(c - b),
+               "f": way * c.real, "g": c.real + way * r["CP"]}
+    mistakes = {"d": {"turned_other_way": g.drawn - sign * g.turn},
+                "e": {"magnitude_only": math.asin((r["offset"] + b.imag) / g.L3), "wrong_branch": cmath.phase(behind - b),
+                      "offset_ignored": cmath.phase(inline - b)},
+                "f": {"wrong_branch": way * behind.real, "offset_ignored": way * inline.real},
+                "g": {"wrong_branch": behind.real + way * r["CP"]}}
+    return answers, mistakes
+
+
+@pytest.mark.parametrize("template_id, worked", [("linkages.coupler_point_reading", suspension_read_worked),
+                                                 ("linkages.slider_crank_reading", slider_crank_read_worked)])
+def test_a_linkage_measured_off_its_drawing_gives_the_key_s_answers(bank, template_id, worked):
+    check_answers(bank, template_id, worked)
+
+
 MISTAKES = {
     "gyroscopes.vehicle_rotor_springs": vehicle_rotor_springs, "gyroscopes.rotor_bearing_reactions": rotor_bearing_reactions,
     "gyroscopes.aircraft_turning": aircraft_turning, "gyroscopes.ship_turbine": ship_turbine,
@@ -447,6 +519,8 @@ MISTAKES = {
     "linkages.fourbar_both_roots": fourbar_both_roots, "linkages.slider_crank_both_roots": slider_crank_both_roots,
     "linkages.mobility_exceptions": mobility_exceptions,
     "linkages.mobility": mobility,
+    "linkages.coupler_point_reading": lambda v: suspension_read_worked(v)[1],
+    "linkages.slider_crank_reading": lambda v: slider_crank_read_worked(v)[1],
 }
 
 

@@ -248,3 +248,37 @@ def test_horizontal_slider_crank_roots_are_the_sine_and_its_supplement(bank):
     assert got["a"] == pytest.approx(deg(first))
     assert got["b"] % 360 == pytest.approx(180 - deg(first))
     assert got["c"] == "first" and got["d"] == pytest.approx(50 * math.cos(rad(60)) + 180 * math.cos(first))
+
+
+def test_four_bar_example_question_1_lengths_measured_then_point_c(bank):
+    # §7.9 question 1 measures the triangular body off the figure: 16, 14 and 28 in (and the links 8 and 10 in,
+    # with the ground's 14 in the one dimension); α = 137.82°; then, with the crank turned to 195°, the same
+    # θ4, θ3 and C as the printed vector method (see test_four_bar_example_vector_method_and_point_c). The
+    # figure's pose is data of our own (the text's figure does not survive): drawn at 120°, the same assembly.
+    got, steps, warnings = answers_and_steps(bank, "linkages.coupler_point_reading", yA="14 inch", AB="8 inch",
+                                             BC="16 inch", DC="10 inch", PC="14 inch", PB="28 inch", theta2="195 deg",
+                                             circuit="2", side="right", drawn="120 deg")
+    inch = 25.4
+    assert [got[k] / inch for k in "abcde"] == pytest.approx([8, 16, 10, 14, 28])     # the lengths measured
+    assert got["h"] == pytest.approx(137.82, abs=5e-3)                               # α
+    assert got["f"] % 360 == pytest.approx(203.62, abs=5e-3)                         # θ4 (Figure 7.32)
+    assert (got["g"] + 180) % 360 == pytest.approx(84.87, abs=0.02)                  # the text's θ3, D to B
+    assert (got["i"] / inch, got["j"] / inch) == pytest.approx((-19.45, -13.50), abs=0.006)
+    assert warnings == []
+
+
+def test_problem_7_1_lengths_measured_then_the_crank_turned_35_degrees_clockwise(bank):
+    # Problem 7.1 (data of our own): the offset slider-crank drawn with its crank at 60°, turned 35° clockwise
+    # to 25°; the lengths read are the printed ones of linkages.slider_crank, which works the same position.
+    got, steps, warnings = answers_and_steps(bank, "linkages.slider_crank_reading", slider="right", L3="180 mm",
+                                             AB="50 mm", offset="20 mm", piston="60 mm", drawn="60 deg",
+                                             turn="35 deg", sense="clockwise")
+    printed, _, _ = answers_and_steps(bank, "linkages.slider_crank", slider="right", L1="20 mm", L2="50 mm",
+                                      L3="180 mm", theta2="25 deg", xA="0 mm", yA="0 mm", tip="60 mm")
+    assert [got[k] for k in "abc"] == pytest.approx([50, 20, 60])
+    assert got["d"] == pytest.approx(25)
+    assert (got["e"], got["f"], got["g"]) == pytest.approx((printed["a"], printed["b"], printed["d"]))
+    theta3 = math.asin((20 + 50 * math.sin(rad(25))) / 180)                          # eq 7.10, below the horizontal
+    assert got["e"] == pytest.approx(-deg(theta3))
+    assert got["g"] == pytest.approx(50 * math.cos(rad(25)) + 180 * math.cos(theta3) + 60)   # eq 7.11, then the piston
+    assert warnings == []

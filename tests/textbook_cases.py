@@ -83,6 +83,8 @@ CASES = [
     ('§7.9 four-bar example (analytical)', 'linkages.fourbar_position', {'L1': '14 inch', 'L2': '8 inch', 'L3': '16 inch', 'L4': '10 inch', 'theta2': '75 deg', 'circuit': '1'}),
     ('§7.9 four-bar example (vector, point C)', 'linkages.coupler_point', {'xA': '0 inch', 'yA': '14 inch', 'L2': '8 inch', 'L3': '16 inch', 'L4': '10 inch', 'theta2': '195 deg', 'circuit': '2', 'CP': '14 inch', 'BP': '28 inch', 'side': 'right'}),
     ('§7.10 slider-crank example', 'linkages.slider_crank', {'slider': 'below', 'L1': '1 inch', 'L2': '0.5 inch', 'L3': '1.75 inch', 'theta2': '75 deg', 'xA': '2 inch', 'yA': '1 inch', 'tip': '2 inch'}),
+    ('§7.9 four-bar example (question 1, lengths measured)', 'linkages.coupler_point_reading', {'yA': '14 inch', 'AB': '8 inch', 'BC': '16 inch', 'DC': '10 inch', 'PC': '14 inch', 'PB': '28 inch', 'theta2': '195 deg', 'circuit': '2', 'side': 'right', 'drawn': '120 deg'}),
+    ('Problem 7.1 (lengths measured, data of our own)', 'linkages.slider_crank_reading', {'slider': 'right', 'L3': '180 mm', 'AB': '50 mm', 'offset': '20 mm', 'piston': '60 mm', 'drawn': '60 deg', 'turn': '35 deg', 'sense': 'clockwise'}),
     ('Problem 7.1 (data of our own)', 'linkages.slider_crank', {'slider': 'right', 'L1': '20 mm', 'L2': '50 mm', 'L3': '180 mm', 'theta2': '325 deg', 'xA': '0 mm', 'yA': '0 mm', 'tip': '60 mm'}),
     ('§7.10 slider-crank (other branch)', 'linkages.slider_crank', {'slider': 'left', 'L1': '0 mm', 'L2': '50 mm', 'L3': '180 mm', 'theta2': '60 deg', 'xA': '100 mm', 'yA': '50 mm', 'tip': '40 mm'}),
     ('Problem 7.3 (data of our own)', 'linkages.rocker_swing', {'L1': '70 mm', 'L2': '20 mm', 'L3': '80 mm', 'L4': '50 mm'}),

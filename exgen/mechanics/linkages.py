@@ -182,6 +182,17 @@ def side(a, b, point) -> float:
     return (b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0])
 
 
+def rocker_pin(a: tuple[float, float], crank: float, coupler: float, rocker: float, theta2: float,
+               turn: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The crank pin B and rocker pin C of a four-bar whose rocker pivots at the origin and whose crank pivots
+    at `a`, by the four-bar example's vector method (§7.9): R_H = R_1 + R_2 from the origin to B, and C at
+    the angle φ (cosine law in the triangle of R_H, coupler and rocker) from it, counter-clockwise for
+    `turn` = +1 and clockwise for -1."""
+    b = polar(a, crank, theta2)
+    phi = cosine_law_angle(math.hypot(*b), rocker, coupler)
+    return b, polar((0.0, 0.0), rocker, math.atan2(b[1], b[0]) + turn * phi)
+
+
 # ---- coupler point (§7.6, Figure 7.21; the four-bar example's point C) --------------------
 
 def coupler_point(c: tuple[float, float], theta3: float, distance: float, alpha: float,
@@ -193,6 +204,21 @@ def coupler_point(c: tuple[float, float], theta3: float, distance: float, alpha:
     """
     turn = -alpha if left_of_bc else alpha
     return polar(c, distance, theta3 + math.pi + turn)
+
+
+def plate_pose(a: tuple[float, float], crank: float, coupler: float, rocker: float, theta2: float, turn: float,
+               cp: float, bp: float, left: bool) -> dict[str, tuple[float, float]]:
+    """B, C and the plate's point P of the four-bar of `rocker_pin` at the crank angle theta2, its coupler a
+    triangular plate BCP with sides CP and BP, P on the left (or right) of B -> C."""
+    b, c = rocker_pin(a, crank, coupler, rocker, theta2, turn)
+    alpha = cosine_law_angle(cp, coupler, bp)
+    return {"B": b, "C": c, "P": coupler_point(c, math.atan2(c[1] - b[1], c[0] - b[0]), cp, alpha, left)}
+
+
+def inside_triangle(point, corners) -> bool:
+    """Whether `point` lies inside the triangle `corners` (on the same side of its three edges)."""
+    sides = [side(corners[k], corners[(k + 1) % 3], point) for k in range(3)]
+    return all(x > 0 for x in sides) or all(x < 0 for x in sides)
 
 
 # ---- limit positions of a crank-rocker (Problems 7.2-7.3) ---------------------------------
