@@ -215,6 +215,27 @@ def _note_below(s: Sketch, text: str) -> None:
     s.d.text(((x0 + x1) / 2, y1 + 22), text, size=NOTE_SIZE, style="italic", cls="scale-note")
 
 
+def _crank_marks(s: Sketch, page, theta2: float) -> float:
+    """The offset of the line of slide below A, the crank's angle marked from +x and A's ground pivot;
+    the radius of the angle's arc, for its label."""
+    s.thin(page["A"], page["F"], dash="4 3", cls="offset")
+    radius = max(16.0, min(34.0, 0.45 * math.dist(page["A"], page["B"])))
+    s.reference_line(page["A"], radius + 24)
+    s.arc(page["A"], radius, 0.0, theta2)
+    _ground_pivot_clear(s, page["A"])
+    return radius
+
+
+def _slider_crank_labels(s: Sketch, page) -> tuple[float, float]:
+    """The axes' glyph and the joints' letters; the middle of the linkage they are placed away from."""
+    s.corner_axes()
+    middle = centre_of([page[k] for k in "ABC"])
+    for key in "ABC":
+        s.joint_label(page[key], key, middle)
+    s.joint_label(page["P"], "P", page["C"], 13)
+    return middle
+
+
 def slider_crank_to_scale(variant) -> str:
     """Problem 7.1's offset slider-crank at the angle it is drawn at, to scale: the crank's angle marked, the
     coupler BC the one dimension; the crank, the offset of the line of slide and the piston are measured."""
@@ -227,17 +248,9 @@ def slider_crank_to_scale(variant) -> str:
         s = Sketch()
         ground = _guide(s, page, [p[0] for p in page.values()] + [page["B"][0], page["C"][0]])
         _draw_slider_crank(s, page)
-        s.thin(page["A"], page["F"], dash="4 3", cls="offset")
-        radius = max(16.0, min(34.0, 0.45 * math.dist(page["A"], page["B"])))
-        s.reference_line(page["A"], radius + 24)
-        s.arc(page["A"], radius, 0.0, drawn)
-        _ground_pivot_clear(s, page["A"])
+        radius = _crank_marks(s, page, drawn)
         _dimension_beside(s, page["B"], page["C"], str(variant.param("L3")), list(page.values()) + ground)
-        s.corner_axes()
-        middle = centre_of([page[k] for k in "ABC"])
-        for key in "ABC":
-            s.joint_label(page[key], key, middle)
-        s.joint_label(page["P"], "P", page["C"], 13)
+        _slider_crank_labels(s, page)
         s.angle_label(page["A"], radius, 0.0, drawn, str(variant.param("drawn")))
         _note_below(s, SCALE_NOTE)
         return s
@@ -260,16 +273,8 @@ def slider_crank_turned(variant) -> str:
         _guide(s, page, [frame(p)[0] for p in (*world.values(), *before.values())])
         _draw_slider_crank(s, {k: frame(v) for k, v in before.items()}, dash=DASH)
         _draw_slider_crank(s, page)
-        s.thin(page["A"], page["F"], dash="4 3", cls="offset")
-        radius = max(16.0, min(34.0, 0.45 * math.dist(page["A"], page["B"])))
-        s.reference_line(page["A"], radius + 24)
-        s.arc(page["A"], radius, 0.0, theta2)
-        _ground_pivot_clear(s, page["A"])
-        s.corner_axes()
-        middle = centre_of([page[k] for k in "ABC"])
-        for key in "ABC":
-            s.joint_label(page[key], key, middle)
-        s.joint_label(page["P"], "P", page["C"], 13)
+        radius = _crank_marks(s, page, theta2)
+        middle = _slider_crank_labels(s, page)
         for (p, q), name in ((("A", "B"), "L2"), (("C", "P"), "tip"), (("A", "F"), "L1")):
             s.link_label(page[p], page[q], _length(variant, name), middle)
         s.angle_label(page["A"], radius, 0.0, theta2, f"θ₂ = {turned}")
