@@ -125,7 +125,7 @@ class QuestionMarker:
         if not differing or any(_degenerate(self.readings[u].value, self.variant.answers[u].value) for u in wrong):
             return None
         worked = self._worked_from(part)
-        if isinstance(worked, str):   # earlier answers all right: a working that cannot go on is no one's fault
+        if isinstance(worked, str):   # why the working cannot go on: the student's to hear only if one was wrong
             return _NotCarried(wrong, worked) if wrong else None
         return worked and (*worked, wrong or differing)   # the message names the wrong ones, if any
 

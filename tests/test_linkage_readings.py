@@ -25,7 +25,8 @@ def worked_from(variant, readings: dict[str, float]) -> dict[str, str]:
     return typed
 
 
-@pytest.mark.parametrize("template_id, off", [(SUSPENSION, {"a": 3, "b": -2.5, "e": 3.5}), (SLIDER_CRANK, {"a": -3, "c": 2})])
+@pytest.mark.parametrize("template_id, off", [(SUSPENSION, {"a": 3, "b": -2.5, "e": 3.5}),
+                                              (SLIDER_CRANK, {"a": -3, "c": 2})])
 @pytest.mark.parametrize("seed", range(5))
 def test_lengths_read_within_a_few_millimetres_and_worked_from_score_full_marks(bank, template_id, off, seed):
     # a student who did not round to the whole 10 mm: each reading right, and so is every part worked from them
@@ -54,7 +55,8 @@ def test_a_length_misread_by_a_division_costs_that_part_only(bank, seed):
 def test_the_crank_turned_the_wrong_way_is_named(bank, seed):
     variant = make_variant(bank.get(SLIDER_CRANK), seed)
     wrong = variant.mistakes["d"]["turned_other_way"]
-    result = grade_variant(variant, {"d": answer_type(variant.template.part("d")).text(wrong, variant.template.part("d"))})
+    part_d = variant.template.part("d")
+    result = grade_variant(variant, {"d": answer_type(part_d).text(wrong, part_d)})
     (part,) = [r for r in result.parts if r.part_id == "d"]
     assert part.status == "wrong" and part.mistake == "turned_other_way"
     sense = str(variant.param("sense"))

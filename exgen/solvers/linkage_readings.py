@@ -75,14 +75,15 @@ def _drawn_plainly_in_the_assembly_asked(p, d) -> None:
               "the crank cannot turn from the position drawn to the one asked in the assembly drawn")
     low, high = GAMMA_RANGE_DEG
     gamma = lk.cosine_law_angle(p.BC, p.DC, math.hypot(*ends[0][0]))
-    d.require(low <= math.degrees(gamma) <= high, "the linkage is drawn near a dead point, where its assembly is hard to see")
+    d.require(low <= math.degrees(gamma) <= high,
+              "the linkage is drawn near a dead point, where its assembly is hard to see")
     drawn = {"A": a, "D": (0.0, 0.0), **lk.plate_pose(a, p.AB, p.BC, p.DC, p.drawn, turn, p.PC, p.PB,
                                                        str(p.side) == "left")}
     d.require(not any(lk.inside_triangle(drawn[q], [drawn[k] for k in "BCP"]) for q in "AD"),
               "a ground pivot is drawn under the coupler plate")
     points = list(drawn.values())
-    d.require(min(math.dist(q, r) for i, q in enumerate(points) for r in points[i + 1:]) >= CLEAR * max(p.yA, p.BC, p.PB),
-              "two of the joints are drawn too close together to tell apart")
+    nearest = min(math.dist(q, r) for i, q in enumerate(points) for r in points[i + 1:])
+    d.require(nearest >= CLEAR * max(p.yA, p.BC, p.PB), "two of the joints are drawn too close together to tell apart")
 
 
 # ---- Problem 7.1: an offset slider-crank ----------------------------------------------------
