@@ -150,3 +150,17 @@ def test_a_measured_linkage_s_key_draws_the_position_asked_with_the_lengths_read
         dashed = [e for e in root(key).iter(f"{SVG}line") if "link" in (e.get("class") or "").split()
                   and e.get("stroke-dasharray") == DASH]
         assert len(dashed) == 2, "the sheet's pose: its crank and its coupler or rocker, dashed"
+
+
+@pytest.mark.parametrize("template_id", sorted(READINGS))
+def test_a_linkage_to_be_measured_is_drawn_large_enough_to_read_to_its_tolerance(bank, template_id):
+    # the readings are graded within 4 mm and drawn to whole 10 mm: 4 mm of the linkage is about 0.8 mm or more
+    # on the printed page (figures print at PT_PER_PX, 1 pt = 0.3528 mm), where a ruler reads to half of one
+    import figure_readings
+    from exgen.figures.svg import PT_PER_PX
+
+    on_page = []
+    for seed in range(40):
+        svg = _sheet_figure(make_variant(bank.get(template_id), seed))
+        on_page.append(0.004 / figure_readings._metres_per_px(svg) * PT_PER_PX * 25.4 / 72)
+    assert min(on_page) >= 0.79, min(on_page)
