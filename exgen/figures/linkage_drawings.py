@@ -12,6 +12,7 @@ from .. import units
 from ..mechanics import linkages as lk
 from ..mechanics.slider_cranks import slider_crank as solve_slider
 from .kinematic import DASH, Sketch, centre_of, fit
+from .linkages import _si, _step
 from .svg import MAX_WIDTH, NOTE_SIZE, unit
 from .symbols import dimension
 from .values import choice
@@ -24,14 +25,6 @@ PAD = 6.0   # px round a drawing (Drawing.svg)
 #: The box of a key's figure, which is not measured.
 KEY_W, KEY_H = 520.0, 340.0
 SCALE_NOTE = "drawn to scale: measure lengths against the dimension given"
-
-
-def _si(variant, name: str) -> float:
-    return float(variant.param(name).si)
-
-
-def _step(variant, name: str) -> float:
-    return float(variant.step(name).value)
 
 
 def _length(variant, name: str) -> str:
